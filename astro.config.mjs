@@ -1,0 +1,43 @@
+// @ts-check
+import { defineConfig } from 'astro/config';
+import mdx from '@astrojs/mdx';
+import remarkMath from 'remark-math';
+import rehypeKatex from 'rehype-katex';
+import { remarkCells, CELL_CODE_LANGUAGE } from './src/lib/remark-cells.mjs';
+
+/**
+ * Names the lazily loaded chunks so the first page load can be checked for
+ * their absence (tests/e2e/lazy.test.mjs): CodeMirror and its Lezer parsers
+ * go to `editor`, the Observable parser and acorn go to `parser`.
+ * @param {string} id
+ * @returns {string | undefined}
+ */
+function lazyChunk(id) {
+  if (/[\\/]node_modules[\\/](@codemirror|@lezer|style-mod|w3c-keyname|crelt)[\\/]/.test(id)) return 'editor';
+  if (/[\\/]widgets[\\/]cells[\\/]editor\.ts$/.test(id)) return 'editor';
+  if (/[\\/]node_modules[\\/](@observablehq[\\/]parser|acorn|acorn-walk)[\\/]/.test(id)) return 'parser';
+  if (/[\\/]widgets[\\/]cells[\\/]parse\.ts$/.test(id)) return 'parser';
+  return undefined;
+}
+
+export default defineConfig({
+  site: 'http://localhost:4321',
+  output: 'static',
+  trailingSlash: 'always',
+  build: { format: 'directory' },
+  markdown: {
+    remarkPlugins: [remarkMath, remarkCells],
+    rehypePlugins: [rehypeKatex],
+    syntaxHighlight: { type: 'shiki', excludeLangs: [CELL_CODE_LANGUAGE] },
+    shikiConfig: {
+      themes: { light: 'github-light', dark: 'github-dark' },
+      defaultColor: false,
+    },
+  },
+  integrations: [mdx()],
+  vite: {
+    build: {
+      rollupOptions: { output: { manualChunks: lazyChunk } },
+    },
+  },
+});

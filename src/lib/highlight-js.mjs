@@ -1,0 +1,34 @@
+/**
+ * Build-time JavaScript highlighting for cell sources.
+ *
+ * It uses the same Lezer grammar and the same `tok-*` class names as the
+ * lazily loaded CodeMirror editor (widgets/cells/editor.ts), so nothing
+ * changes colour when the static code is swapped for the editor, and the
+ * no-JavaScript reader still gets highlighted code.
+ */
+import { classHighlighter, highlightCode } from '@lezer/highlight';
+import { parser } from '@lezer/javascript';
+
+/**
+ * @param {string} source
+ * @returns {Array<import('hast').ElementContent>} hast text and `span.tok-*` nodes
+ */
+export function highlightJs(source) {
+  /** @type {Array<import('hast').ElementContent>} */
+  const nodes = [];
+  highlightCode(
+    source,
+    parser.parse(source),
+    classHighlighter,
+    (text, classes) => {
+      const value = { type: 'text', value: text };
+      nodes.push(
+        classes
+          ? { type: 'element', tagName: 'span', properties: { className: classes.split(' ') }, children: [/** @type {import('hast').Text} */ (value)] }
+          : /** @type {import('hast').Text} */ (value),
+      );
+    },
+    () => nodes.push({ type: 'text', value: '\n' }),
+  );
+  return nodes;
+}

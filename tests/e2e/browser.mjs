@@ -1,0 +1,79 @@
+/**
+ * Headless Chromium for the e2e tests, plus a page watcher that turns the
+ * things a reader should never meet — console errors and warnings, uncaught
+ * exceptions, failed or foreign requests — into a list the test asserts empty.
+ */
+import { mkdtemp, rm } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { chromium } from 'playwright-core';
+
+const ARGS = [
+  '--no-sandbox',
+  '--disable-gpu',
+  '--disable-quic',
+  '--no-first-run',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
+];
+
+/**
+ * A fresh browser profile (Playwright rejects --user-data-dir in args, hence
+ * launchPersistentContext on a new temp dir). `options` go to the context,
+ * e.g. `{ javaScriptEnabled: false }` or `{ colorScheme: 'dark' }`.
+ * @param {import('playwright-core').BrowserContextOptions} [options]
+ */
+export async function launchBrowser(options = {}) {
+  const profile = await mkdtemp(join(tmpdir(), 'phasebook-e2e-'));
+  const context = await chromium.launchPersistentContext(profile, {
+    executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+    headless: true,
+    args: ARGS,
+    viewport: { width: 1100, height: 900 },
+    ...options,
+  });
+  return {
+    context,
+    async close() {
+      await context.close();
+      await rm(profile, { recursive: true, force: true });
+    },
+  };
+}
+
+const LOCAL_HOSTS = new Set(['127.0.0.1', 'localhost', '[::1]']);
+
+/**
+ * Records what a page does. `problems` collects console errors/warnings,
+ * page errors, failed requests, HTTP errors and any request to a host other
+ * than this machine; `requests` lists every URL requested, in order.
+ * @param {import('playwright-core').Page} page
+ */
+export function watchPage(page) {
+  /** @type {string[]} */
+  const problems = [];
+  /** @type {string[]} */
+  const requests = [];
+  page.on('console', (message) => {
+    if (message.type() === 'error' || message.type() === 'warning') {
+      problems.push(`console.${message.type()}: ${message.text()} (${message.location().url})`);
+    }
+  });
+  page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
+  page.on('request', (request) => {
+    const url = new URL(request.url());
+    requests.push(request.url());
+    if (url.protocol !== 'data:' && !LOCAL_HOSTS.has(url.hostname)) problems.push(`foreign request: ${request.url()}`);
+  });
+  page.on('requestfailed', (request) => problems.push(`request failed: ${request.url()} ${request.failure()?.errorText}`));
+  page.on('response', (response) => {
+    if (response.status() >= 400) problems.push(`HTTP ${response.status()}: ${response.url()}`);
+  });
+  return { problems, requests };
+}
+
+/** Waits until every cell on the page has shown its first value or error. */
+export async function cellsReady(page) {
+  await page.waitForSelector('body[data-cells-ready]', { state: 'attached', timeout: 15_000 });
+}

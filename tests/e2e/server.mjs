@@ -1,0 +1,96 @@
+/**
+ * A tiny static file server over the built site (dist/), for the e2e tests:
+ * 127.0.0.1 on a free port, real MIME types, `/<slug>/` → `<slug>/index.html`,
+ * and a redirect from `/<slug>` to `/<slug>/` as static hosts do.
+ * Nothing is cached, so every test sees exactly the requests a page makes.
+ */
+import { createServer } from 'node:http';
+import { createReadStream } from 'node:fs';
+import { stat } from 'node:fs/promises';
+import { extname, join, normalize, resolve, sep } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+export const DIST = fileURLToPath(new URL('../../dist/', import.meta.url));
+
+const MIME_TYPES = {
+  '.html': 'text/html; charset=utf-8',
+  '.js': 'text/javascript; charset=utf-8',
+  '.mjs': 'text/javascript; charset=utf-8',
+  '.css': 'text/css; charset=utf-8',
+  '.json': 'application/json; charset=utf-8',
+  '.map': 'application/json; charset=utf-8',
+  '.svg': 'image/svg+xml',
+  '.png': 'image/png',
+  '.jpg': 'image/jpeg',
+  '.webp': 'image/webp',
+  '.ico': 'image/x-icon',
+  '.woff2': 'font/woff2',
+  '.woff': 'font/woff',
+  '.ttf': 'font/ttf',
+  '.txt': 'text/plain; charset=utf-8',
+  '.xml': 'application/xml; charset=utf-8',
+};
+
+async function fileAt(path) {
+  try {
+    return await stat(path);
+  } catch {
+    return null;
+  }
+}
+
+/**
+ * @param {string} root directory to serve (default: dist/)
+ * @returns {Promise<{ origin: string, close: () => Promise<void> }>}
+ */
+export async function startServer(root = DIST) {
+  const base = resolve(root);
+  if (!(await fileAt(join(base, 'index.html')))) {
+    throw new Error(`No built site in ${base}: run \`npm run build\` first.`);
+  }
+  const server = createServer(async (request, response) => {
+    const url = new URL(request.url ?? '/', 'http://127.0.0.1');
+    let path;
+    try {
+      path = normalize(join(base, decodeURIComponent(url.pathname)));
+    } catch {
+      response.writeHead(400).end('Bad request');
+      return;
+    }
+    if (path !== base && !path.startsWith(base + sep)) {
+      response.writeHead(403).end('Forbidden');
+      return;
+    }
+    let info = await fileAt(path);
+    if (info?.isDirectory()) {
+      if (!url.pathname.endsWith('/')) {
+        response.writeHead(301, { Location: `${url.pathname}/${url.search}` }).end();
+        return;
+      }
+      path = join(path, 'index.html');
+      info = await fileAt(path);
+    }
+    if (!info?.isFile()) {
+      const notFound = join(base, '404.html');
+      const page = await fileAt(notFound);
+      response.writeHead(404, { 'Content-Type': MIME_TYPES['.html'], 'Cache-Control': 'no-store' });
+      if (page) createReadStream(notFound).pipe(response);
+      else response.end('Not found');
+      return;
+    }
+    response.writeHead(200, {
+      'Content-Type': MIME_TYPES[extname(path)] ?? 'application/octet-stream',
+      'Content-Length': info.size,
+      'Cache-Control': 'no-store',
+    });
+    if (request.method === 'HEAD') response.end();
+    else createReadStream(path).pipe(response);
+  });
+  await new Promise((ready) => server.listen(0, '127.0.0.1', ready));
+  const address = server.address();
+  const port = typeof address === 'object' && address ? address.port : 0;
+  return {
+    origin: `http://127.0.0.1:${port}`,
+    close: () => new Promise((done) => server.close(() => done())),
+  };
+}

@@ -1,0 +1,119 @@
+/**
+ * The site as a reader meets it: contents, chapter pages, math, links, and
+ * that nothing goes wrong on load (console, page errors, foreign hosts).
+ */
+import assert from 'node:assert/strict';
+import { after, before, test } from 'node:test';
+import { cellsReady, openSite, watchPage } from './fixture.mjs';
+
+/** @type {Awaited<ReturnType<typeof openSite>>} */
+let site;
+before(async () => (site = await openSite()));
+after(() => site?.close());
+
+/** Paths of the chapters, in the order the contents page lists them. */
+async function chapterPaths() {
+  const page = await site.context.newPage();
+  await page.goto(`${site.origin}/`);
+  const hrefs = await page.locator('.toc a').evaluateAll((links) => links.map((a) => a.getAttribute('href')));
+  await page.close();
+  return hrefs;
+}
+
+test('contents page lists the chapters in declared order, with descriptions', async () => {
+  const page = await site.context.newPage();
+  await page.goto(`${site.origin}/`);
+  const titles = await page.locator('.toc li > a').allTextContents();
+  assert.deepEqual(titles.slice(0, 1), ['Introduction']);
+  assert.equal(titles.at(-1), 'How to use this book');
+  const descriptions = await page.locator('.toc li > p').allTextContents();
+  assert.equal(descriptions.length, titles.length);
+  assert.ok(descriptions.every((text) => text.trim().length > 0));
+  await page.close();
+});
+
+test('every page loads with no console error, page error, failed or foreign request', async () => {
+  const paths = ['/', ...(await chapterPaths())];
+  assert.ok(paths.length >= 3, `expected at least two chapters, got ${paths}`);
+  for (const path of paths) {
+    const page = await site.context.newPage();
+    const { problems, requests } = watchPage(page);
+    await page.goto(site.origin + path, { waitUntil: 'load' });
+    if ((await page.locator('[data-cell]').count()) > 0) await cellsReady(page);
+    await page.waitForTimeout(200);
+    assert.deepEqual(problems, [], `problems on ${path}`);
+    assert.ok(requests.every((url) => url.startsWith(site.origin) || url.startsWith('data:')), `requests of ${path}`);
+    await page.close();
+  }
+});
+
+test('KaTeX renders inline and display math on the introduction', async () => {
+  const page = await site.context.newPage();
+  await page.goto(`${site.origin}/introduction/`);
+  assert.ok((await page.locator('.katex').count()) >= 5);
+  assert.ok((await page.locator('.katex-display').count()) >= 2);
+  // Hamilton's equations: the MathML copy KaTeX emits carries the source.
+  const annotations = await page.locator('.katex annotation').allTextContents();
+  assert.ok(annotations.some((tex) => tex.includes('\\frac{\\partial H}{\\partial p_i}')));
+  // KaTeX fonts load from the site itself.
+  const fontsLoaded = await page.evaluate(async () => {
+    await document.fonts.ready;
+    return [...document.fonts].filter((font) => font.family.startsWith('KaTeX') && font.status === 'loaded').length;
+  });
+  assert.ok(fontsLoaded > 0, 'no KaTeX font loaded');
+  await page.close();
+});
+
+test('chapters link to previous, next and contents in declared order', async () => {
+  const paths = await chapterPaths();
+  for (const [i, path] of paths.entries()) {
+    const page = await site.context.newPage();
+    await page.goto(site.origin + path);
+    const nav = page.locator('nav.chapter-nav');
+    assert.equal(await nav.locator('a.contents').getAttribute('href'), '/');
+    const previous = await nav.locator('a[rel=prev]').getAttribute('href').catch(() => null);
+    const next = await nav.locator('a[rel=next]').getAttribute('href').catch(() => null);
+    assert.equal(previous, i > 0 ? paths[i - 1] : null, `previous of ${path}`);
+    assert.equal(next, i < paths.length - 1 ? paths[i + 1] : null, `next of ${path}`);
+    await page.close();
+  }
+});
+
+test('without JavaScript, text, math and cell sources still read', async () => {
+  const noScript = await openSite({ javaScriptEnabled: false });
+  try {
+    const page = await noScript.context.newPage();
+    const { problems } = watchPage(page);
+    await page.goto(`${noScript.origin}/introduction/`);
+    assert.match((await page.locator('article').textContent()) ?? '', /Hamilton.s equations/);
+    assert.ok((await page.locator('.katex-display').count()) >= 2);
+    assert.ok(await page.locator('.katex-display').first().isVisible());
+    const omega = page.locator('[data-cell="omega"]');
+    assert.equal(await omega.locator('pre.cell-code').textContent(), 'omega = 10');
+    assert.ok(await omega.locator('pre.cell-code').isVisible());
+    assert.ok(await omega.locator('.cell-noscript').isVisible());
+    assert.equal(await omega.locator('.cell-toolbar').isVisible(), false);
+    assert.equal(await page.locator('.theme-toggle').isVisible(), false);
+    assert.deepEqual(problems, []);
+  } finally {
+    await noScript.close();
+  }
+});
+
+test('the theme toggle switches and remembers the theme', async () => {
+  const page = await site.context.newPage();
+  await page.emulateMedia({ colorScheme: 'light' });
+  await page.goto(`${site.origin}/introduction/`);
+  const background = () => page.evaluate(() => getComputedStyle(document.documentElement).backgroundColor);
+  const light = await background();
+  await page.locator('[data-theme-toggle]').click();
+  assert.equal(await page.evaluate(() => document.documentElement.dataset.theme), 'dark');
+  const dark = await background();
+  assert.notEqual(dark, light);
+  await page.reload();
+  assert.equal(await background(), dark);
+  await page.locator('[data-theme-toggle]').click();
+  assert.equal(await background(), light);
+  await page.evaluate(() => localStorage.removeItem('phasebook:theme'));
+  await page.close();
+});

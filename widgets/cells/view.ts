@@ -1,0 +1,146 @@
+/**
+ * The DOM of one cell, as rendered by src/lib/remark-cells.mjs: reads what the
+ * build put there and shows values, errors and notices. No runtime logic.
+ */
+import { inspect } from './inspect.ts';
+import type { CellSpec } from './spec.ts';
+
+/**
+ * `compile`: the reader's text does not parse (the old definition keeps running).
+ * `runtime`: the running definition threw, or one of its inputs did.
+ */
+export type ErrorKind = 'compile' | 'runtime';
+const ERROR_ORDER: readonly ErrorKind[] = ['compile', 'runtime'];
+
+function part<T extends Element>(root: Element, selector: string): T {
+  const found = root.querySelector<T>(selector);
+  if (!found) throw new Error(`cell ${root.getAttribute('data-cell')} lacks ${selector}`);
+  return found;
+}
+
+export class CellView {
+  readonly root: HTMLElement;
+  readonly id: string;
+  /** Hash of the chapter's original source, for telling stale saved edits apart. */
+  readonly hash: string;
+  /** The chapter's original source, as highlighted by the build. */
+  readonly originalSource: string;
+  /** The build's parse of the original, or null when the build could not parse it. */
+  readonly originalSpec: CellSpec | null;
+  /** The build's syntax error for the original, if any. */
+  readonly buildError: string | null;
+
+  readonly editorHost: HTMLElement;
+  readonly runButton: HTMLButtonElement;
+  readonly resetButton: HTMLButtonElement;
+  readonly #output: HTMLElement;
+  readonly #error: HTMLElement;
+  readonly #notice: HTMLElement;
+  readonly #status: HTMLElement;
+  readonly #errors = new Map<ErrorKind, string>();
+  /** The build's highlighted code, to put back on Reset before an editor exists. */
+  readonly #originalCode: Node | null;
+
+  constructor(root: HTMLElement) {
+    this.root = root;
+    this.id = root.dataset.cell ?? '';
+    this.hash = root.dataset.cellHash ?? '';
+    const spec = root.dataset.cellSpec;
+    this.originalSpec = spec ? (JSON.parse(spec) as CellSpec) : null;
+    this.buildError = root.dataset.cellBuildError ?? null;
+    this.editorHost = part(root, '.cell-editor');
+    const code = this.editorHost.querySelector('pre.cell-code > code');
+    this.originalSource = code?.textContent ?? '';
+    this.#originalCode = code?.cloneNode(true) ?? null;
+    this.runButton = part(root, '[data-cell-run]');
+    this.resetButton = part(root, '[data-cell-reset]');
+    this.#output = part(root, '[data-cell-output]');
+    this.#error = part(root, '[data-cell-error]');
+    this.#notice = part(root, '[data-cell-notice]');
+    this.#status = part(root, '[data-cell-status]');
+  }
+
+  /** The build's `<pre>`, until the editor replaces it. */
+  get staticCode(): HTMLPreElement | null {
+    return this.editorHost.querySelector('pre.cell-code');
+  }
+
+  /** Shows `source` in the static `<pre>` when no editor is mounted yet (highlighted only if it is the original). */
+  showStaticSource(source: string): void {
+    const code = this.staticCode?.querySelector('code');
+    if (!code || code.textContent === source) return;
+    if (source === this.originalSource && this.#originalCode) code.replaceWith(this.#originalCode.cloneNode(true));
+    else code.textContent = source;
+  }
+
+  setState(state: 'pending' | 'fulfilled' | 'rejected'): void {
+    this.root.dataset.cellState = state;
+  }
+
+  /** A DOM node is shown as itself (kept if it is already shown); anything else through the inspector. */
+  showValue(value: unknown, name: string | null): void {
+    if (value instanceof Node) {
+      if (this.#output.firstChild !== value || this.#output.childNodes.length !== 1) this.#output.replaceChildren(value);
+      return;
+    }
+    if (value === undefined && !name) {
+      this.#output.replaceChildren();
+      return;
+    }
+    this.#output.replaceChildren(inspect(value, name));
+  }
+
+  /**
+   * Sets or clears (`null`) one kind of error. A compile error (the text in
+   * the editor does not parse) and a runtime error (the running definition
+   * failed) can show at once, compile first.
+   */
+  setError(kind: ErrorKind, message: string | null): void {
+    if (message === null) this.#errors.delete(kind);
+    else this.#errors.set(kind, message);
+    const lines = [...this.#errors].sort(([a], [b]) => ERROR_ORDER.indexOf(a) - ERROR_ORDER.indexOf(b)).map(([k, text]) => {
+      const line = document.createElement('div');
+      line.className = `cell-error-${k}`;
+      line.textContent = text;
+      return line;
+    });
+    this.#error.replaceChildren(...lines);
+    this.#error.hidden = lines.length === 0;
+  }
+
+  clearOutput(): void {
+    this.#output.replaceChildren();
+  }
+
+  /** A one-line notice with buttons, e.g. a saved edit that no longer matches the chapter. */
+  showNotice(message: string, actions: ReadonlyArray<{ label: string; run: () => void }>): void {
+    const text = document.createElement('span');
+    text.textContent = message;
+    const buttons = actions.map(({ label, run }) => {
+      const button = document.createElement('button');
+      button.type = 'button';
+      button.className = 'cell-button';
+      button.textContent = label;
+      button.addEventListener('click', run);
+      return button;
+    });
+    this.#notice.replaceChildren(text, ...buttons);
+    this.#notice.hidden = false;
+  }
+
+  clearNotice(): void {
+    this.#notice.hidden = true;
+    this.#notice.replaceChildren();
+  }
+
+  /** Marks the cell as differing from the chapter's original (Reset becomes available). */
+  setEdited(edited: boolean): void {
+    this.root.toggleAttribute('data-cell-edited', edited);
+    this.resetButton.disabled = !edited;
+    this.#status.textContent = edited ? 'edited' : '';
+  }
+
+  setBusy(busy: boolean): void {
+    this.runButton.disabled = busy;
+  }
+}

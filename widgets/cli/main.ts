@@ -1,0 +1,46 @@
+import { BlowUpError, InputError } from '../core/errors.ts';
+import { VERSION } from '../core/version.ts';
+import { SIMULATE_USAGE, simulate } from './simulate.ts';
+import { SPECTRUM_USAGE, spectrumCommand } from './spectrum.ts';
+
+const USAGE = `phasebook ${VERSION}: simulate Hamiltonian systems and analyse their spectra
+
+  ${SIMULATE_USAGE}
+  ${SPECTRUM_USAGE}
+
+H is a math expression (p^2/2 + omega0^2*q^2/2 + alpha*q^3) or a JS arrow
+function ((t, x) => x[1]**2/2 + x[0]**2/2); --param values are visible to both.
+`;
+
+/**
+ * Runs one command. Any problem with the input ends in one line on stderr and
+ * exit status 2: a user mistake deserves a sentence, not a stack trace.
+ */
+export async function main(argv: readonly string[]): Promise<number> {
+  const [command, ...rest] = argv;
+  try {
+    switch (command) {
+      case 'simulate':
+        await simulate(rest);
+        return 0;
+      case 'spectrum':
+        process.stdout.write(spectrumCommand(rest));
+        return 0;
+      case undefined:
+      case '--help':
+      case 'help':
+        process.stdout.write(USAGE);
+        return command === undefined ? 2 : 0;
+      case '--version':
+        process.stdout.write(`${VERSION}\n`);
+        return 0;
+      default:
+        throw new InputError(`unknown command "${command}"; use simulate or spectrum (phasebook --help)`);
+    }
+  } catch (error) {
+    const known = error instanceof InputError || error instanceof BlowUpError;
+    const message = known ? error.message : `internal error: ${(error as Error)?.message ?? String(error)}`;
+    process.stderr.write(`phasebook: ${message.split('\n')[0]}\n`);
+    return 2;
+  }
+}

@@ -1,0 +1,82 @@
+import { readFileSync } from 'node:fs';
+import { InputError } from '../core/errors.ts';
+import { readTable } from '../core/read-table.ts';
+import { findPeaks, spectrum } from '../core/spectrum.ts';
+import { checkWindowName } from '../core/window.ts';
+import { number, parseArgs, wholeNumber } from './args.ts';
+
+export const SPECTRUM_USAGE = `phasebook spectrum --input FILE --column NAME [--from T0] [--to T1]
+                   [--window hamming|none] [--top K] [--format text|json]`;
+
+export function spectrumCommand(argv: readonly string[]): string {
+  const args = parseArgs(argv, {
+    input: 'value',
+    column: 'value',
+    from: 'value',
+    to: 'value',
+    window: 'value',
+    top: 'value',
+    format: 'value',
+  });
+  const input = args.values.get('input');
+  const name = args.values.get('column');
+  if (!input) throw new InputError(`--input is required (usage: ${SPECTRUM_USAGE.split('\n')[0]} …)`);
+  if (!name) throw new InputError('--column is required: name the series to analyse, e.g. --column q');
+  const window = validWindow(args.values.get('window') ?? 'hamming');
+  const top = wholeNumber(args.values.get('top') ?? '5', '--top');
+  const format = args.values.get('format') ?? 'text';
+  if (format !== 'text' && format !== 'json') throw new InputError(`--format must be text or json, not "${format}"`);
+
+  let text: string;
+  try {
+    text = readFileSync(input, 'utf8');
+  } catch (error) {
+    throw new InputError(`cannot read ${input}: ${(error as NodeJS.ErrnoException).code ?? (error as Error).message}`);
+  }
+  const table = readTable(text, input);
+  const width = table.columns.length;
+  const c = table.columns.indexOf(name);
+  if (c < 0) throw new InputError(`no column "${name}" in ${input}; it has ${table.columns.join(', ')}`);
+  const t = table.columns.indexOf('t');
+  if (t < 0) throw new InputError(`${input} has no t column`);
+  const from = number(args.values.get('from') ?? '-Infinity'.replace('-Infinity', String(-Number.MAX_VALUE)), '--from');
+  const to = number(args.values.get('to') ?? String(Number.MAX_VALUE), '--to');
+  if (to < from) throw new InputError(`--to (${to}) is before --from (${from})`);
+
+  const series: number[] = [];
+  const times: number[] = [];
+  for (let r = 0; r < table.rows; r++) {
+    const time = table.data[r * width + t];
+    if (time >= from && time <= to) {
+      times.push(time);
+      series.push(table.data[r * width + c]);
+    }
+  }
+  if (series.length < 4) throw new InputError(`only ${series.length} samples of ${name} lie in [${from}, ${to}]; a spectrum needs more`);
+  const interval = (times[times.length - 1] - times[0]) / (times.length - 1);
+  checkUniform(times, interval);
+  const peaks = findPeaks(spectrum(series, interval, { window }), { top, refine: series, window });
+  if (format === 'json') return JSON.stringify({ peaks }) + '\n';
+  const lines = peaks.map(
+    (p, i) =>
+      `${String(i + 1).padStart(2)}  f = ${p.frequency.toPrecision(10)}  ω = ${(2 * Math.PI * p.frequency).toPrecision(10)}  amplitude = ${p.amplitude.toPrecision(6)}`,
+  );
+  return `${name}: ${series.length} samples, Δt = ${interval.toPrecision(6)}, ${window} window\n${lines.join('\n')}\n`;
+}
+
+function validWindow(name: string) {
+  try {
+    return checkWindowName(name);
+  } catch {
+    throw new InputError(`--window must be hamming or none, not "${name}"`);
+  }
+}
+
+/** The FFT assumes equal spacing; a gap (a dropped stretch, a merged file) would fake frequencies. */
+function checkUniform(times: readonly number[], interval: number): void {
+  for (let i = 1; i < times.length; i++) {
+    if (Math.abs(times[i] - times[i - 1] - interval) > 1e-6 * interval + 1e-12) {
+      throw new InputError(`the samples are not equally spaced in t (at t = ${times[i - 1]}); a spectrum needs a uniform series`);
+    }
+  }
+}

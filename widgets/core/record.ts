@@ -1,0 +1,186 @@
+import { columnProblem, type Table } from './table.ts';
+
+export type { Table } from './table.ts';
+export { bytesFor, capacityFor } from './capacity.ts';
+
+/** Throws unless `i` is an integer in [0, n); `what` names it in the message. */
+function checkIndex(i: number, n: number, what: string): void {
+  if (!Number.isInteger(i) || i < 0 || i >= n) throw new RangeError(`TrajectoryRecord: ${what} ${i} is outside [0, ${n})`);
+}
+
+/**
+ * The samples of one running trajectory, kept in a fixed-size ring so that a
+ * simulation left running for hours uses bounded memory: once full, each new
+ * row overwrites the oldest and `dropped` counts the loss, so exports and
+ * widgets can say that the record no longer starts at t0.
+ *
+ * Rows are indexed in time order: row 0 is the oldest row still held.
+ */
+export class TrajectoryRecord {
+  readonly columns: readonly string[];
+  readonly width: number;
+  readonly capacity: number;
+  /** Rows overwritten since creation or the last clear(). */
+  dropped = 0;
+
+  private readonly buf: Float64Array;
+  /** Ring slot of row 0. */
+  private head = 0;
+  private count = 0;
+
+  constructor(columns: readonly string[], capacity: number) {
+    if (!Number.isInteger(capacity) || capacity < 1) {
+      throw new Error(`TrajectoryRecord: capacity must be a positive integer number of rows, got ${capacity}`);
+    }
+    const problem = columnProblem(columns);
+    if (problem !== undefined) throw new Error(`TrajectoryRecord: ${problem}`);
+    if (columns[0] !== 't') throw new Error(`TrajectoryRecord: column 0 must be "t", got "${columns[0]}"`);
+    this.columns = Object.freeze([...columns]);
+    this.width = columns.length;
+    this.capacity = capacity;
+    this.buf = new Float64Array(capacity * this.width);
+  }
+
+  get length(): number {
+    return this.count;
+  }
+
+  get truncated(): boolean {
+    return this.dropped > 0;
+  }
+
+  /** Claims the slot for a new row, evicting the oldest when full; returns its buffer offset. */
+  private claim(): number {
+    if (this.count < this.capacity) return this.slot(this.count++);
+    const at = this.head * this.width;
+    if (++this.head === this.capacity) this.head = 0;
+    this.dropped++;
+    return at;
+  }
+
+  /** Buffer offset of row i, unchecked. */
+  private slot(i: number): number {
+    const s = this.head + i;
+    return (s < this.capacity ? s : s - this.capacity) * this.width;
+  }
+
+  push(values: ArrayLike<number>, offset = 0): void {
+    const w = this.width;
+    if (!(offset >= 0) || values.length - offset < w) {
+      throw new RangeError(`TrajectoryRecord.push: need ${w} values from offset ${offset}, have ${values.length - offset}`);
+    }
+    const at = this.claim();
+    for (let j = 0; j < w; j++) this.buf[at + j] = values[offset + j];
+  }
+
+  /**
+   * Records straight out of a (possibly batched) state array, so the sampler
+   * never assembles a temporary row.
+   */
+  pushState(t: number, x: Float64Array, xOffset: number, dim: number, derived?: ArrayLike<number>): void {
+    const nd = derived === undefined ? 0 : derived.length;
+    if (1 + dim + nd !== this.width) {
+      throw new RangeError(`TrajectoryRecord.pushState: 1 + ${dim} + ${nd} values do not fill ${this.width} columns`);
+    }
+    if (!(xOffset >= 0) || xOffset + dim > x.length) {
+      throw new RangeError(`TrajectoryRecord.pushState: state slice [${xOffset}, ${xOffset + dim}) is outside x`);
+    }
+    const at = this.claim();
+    const buf = this.buf;
+    buf[at] = t;
+    for (let j = 0; j < dim; j++) buf[at + 1 + j] = x[xOffset + j];
+    for (let j = 0; j < nd; j++) buf[at + 1 + dim + j] = (derived as ArrayLike<number>)[j];
+  }
+
+  time(i: number): number {
+    checkIndex(i, this.count, 'row');
+    return this.buf[this.slot(i)];
+  }
+
+  get(i: number, column: number): number {
+    checkIndex(i, this.count, 'row');
+    checkIndex(column, this.width, 'column');
+    return this.buf[this.slot(i) + column];
+  }
+
+  columnIndex(name: string): number {
+    return this.columns.indexOf(name);
+  }
+
+  private checkRange(from: number, to: number): void {
+    if (!Number.isInteger(from) || !Number.isInteger(to) || from < 0 || to < from || to > this.count) {
+      throw new RangeError(`TrajectoryRecord: rows [${from}, ${to}) are not within [0, ${this.count})`);
+    }
+  }
+
+  /**
+   * One column of rows [from, to) in time order. When `out` is given the
+   * values go to out[0 … to-from) and `out` itself is returned, so a plot can
+   * reuse one buffer every frame.
+   */
+  column(column: number | string, out?: Float64Array, from = 0, to = this.count): Float64Array {
+    const c = typeof column === 'string' ? this.columnIndex(column) : column;
+    if (c === -1) throw new RangeError(`TrajectoryRecord.column: no column named "${column}"`);
+    checkIndex(c, this.width, 'column');
+    this.checkRange(from, to);
+    const n = to - from;
+    const dest = out ?? new Float64Array(n);
+    if (dest.length < n) throw new RangeError(`TrajectoryRecord.column: out holds ${dest.length} values, need ${n}`);
+    for (let k = 0; k < n; k++) dest[k] = this.buf[this.slot(from + k) + c];
+    return dest;
+  }
+
+  /** [from, to) such that exactly rows from … to-1 have t0 <= t <= t1; t must increase. */
+  range(t0: number, t1: number): [number, number] {
+    const from = this.search(0, (t) => t >= t0);
+    return [from, this.search(from, (t) => t > t1)];
+  }
+
+  /** The first row at or after `lo` whose time is `past`, for a predicate monotone in t. */
+  private search(lo: number, past: (t: number) => boolean): number {
+    let hi = this.count;
+    while (lo < hi) {
+      const mid = (lo + hi) >>> 1;
+      if (past(this.buf[this.slot(mid)])) hi = mid;
+      else lo = mid + 1;
+    }
+    return lo;
+  }
+
+  /**
+   * Rows [from, to) as at most two runs of row indices into the live storage,
+   * in time order, so exporters can stream the ring without copying it. The
+   * data changes with the next push.
+   */
+  slices(from = 0, to = this.count): Array<{ data: Float64Array; from: number; to: number }> {
+    this.checkRange(from, to);
+    if (from === to) return [];
+    const start = this.slot(from) / this.width;
+    const end = start + (to - from);
+    if (end <= this.capacity) return [{ data: this.buf, from: start, to: end }];
+    return [
+      { data: this.buf, from: start, to: this.capacity },
+      { data: this.buf, from: 0, to: end - this.capacity },
+    ];
+  }
+
+  /** A detached, contiguous copy of rows [from, to). */
+  table(from = 0, to = this.count): Table {
+    this.checkRange(from, to);
+    const w = this.width;
+    const data = new Float64Array((to - from) * w);
+    let at = 0;
+    for (const s of this.slices(from, to)) {
+      data.set(s.data.subarray(s.from * w, s.to * w), at);
+      at += (s.to - s.from) * w;
+    }
+    return { columns: this.columns, rows: to - from, data };
+  }
+
+  /** Forgets all rows and the dropped count; the storage is kept for reuse. */
+  clear(): void {
+    this.head = 0;
+    this.count = 0;
+    this.dropped = 0;
+  }
+}

@@ -1,0 +1,70 @@
+/**
+ * The shapes shared by every part of the core. A state vector is always laid
+ * out as `[q0 … q(n-1), p0 … p(n-1)]` for n degrees of freedom, and a batch of
+ * M trajectories of one model is M such vectors back to back in one
+ * Float64Array.
+ */
+
+/** Writes dx/dt at (t, x) into `dxdt`; both have length 2·dof. */
+export type VectorField = (t: number, x: Float64Array, dxdt: Float64Array) => void;
+
+/** Evaluates H at (t, x) where x starts at `offset` in a (possibly batched) state array. */
+export type HamiltonianFunction = (t: number, x: Float64Array, offset?: number) => number;
+
+/**
+ * Advances trajectories by whole RK 3/8 steps. Step k of a run starts at
+ * t = t0 + k·dt, computed rather than accumulated so that long runs carry no
+ * summed rounding in t.
+ */
+export interface Stepper {
+  /** 2·dof */
+  readonly dim: number;
+  /**
+   * Advances `count` trajectories packed in `x` by `steps` steps, the first of
+   * which is step number `k0`. Returns the number of steps that every
+   * trajectory completed with a finite state; if that is less than `steps`,
+   * the trajectory that failed holds the first non-finite state it reached.
+   */
+  advance(
+    x: Float64Array,
+    count: number,
+    params: Float64Array,
+    t0: number,
+    k0: number,
+    dt: number,
+    steps: number,
+  ): number;
+}
+
+/** How the canonical equations of a model were obtained. */
+export type Route =
+  | 'expression' // H as a math expression, exact symbolic derivatives
+  | 'js-translated' // H as a JS function translated to an expression
+  | 'js-stencil' // H as an opaque JS function, 5-point central differences
+  | 'vector-field' // dx/dt supplied by the author
+  | 'gradient'; // ∇H supplied by the author
+
+/** A Hamiltonian system ready to integrate: model, not solver, not view. */
+export interface Model {
+  readonly dof: number;
+  /** 2·dof */
+  readonly dim: number;
+  /** Names of the state components, q's then p's: e.g. ['q', 'p'] or ['q0', 'q1', 'p0', 'p1']. */
+  readonly names: readonly string[];
+  /** Parameter names, in the order of `params`. */
+  readonly paramNames: readonly string[];
+  /** Current parameter values; writing one takes effect at the next step, with no recompilation. */
+  readonly params: Float64Array;
+  readonly route: Route;
+  /** One sentence on the accuracy of the canonical equations for this route. */
+  readonly accuracy: string;
+  /** The source of H as given (expression or function text), for export metadata. */
+  readonly source: string;
+  readonly stepper: Stepper;
+  /** H itself, when known (not for a bare vector field). */
+  readonly hamiltonian?: HamiltonianFunction;
+  /** dx/dt at one state, for readouts and tests. */
+  readonly field: VectorField;
+  /** LaTeX of H and of Hamilton's equations, when H is symbolic. */
+  readonly latex?: { hamiltonian: string; equations: string[] };
+}

@@ -1,0 +1,92 @@
+import type { Context } from './canvas.ts';
+import type { Ticks } from './ticks.ts';
+
+/**
+ * Axes drawn on a canvas from d3 scales: tick positions come from the
+ * scale, values and labels from ticks.ts. Drawing on the canvas rather than
+ * in an SVG overlay keeps a PNG download identical to the screen. Units are
+ * CSS pixels; the caller scales the context by the pixel ratio.
+ */
+
+/** The plot area inside the axes, in CSS pixels. */
+export interface Box {
+  x: number;
+  y: number;
+  width: number;
+  height: number;
+}
+
+export interface AxisStyle {
+  text: string;
+  axis: string;
+  grid: string;
+  font: string;
+}
+
+/** Room left of the plot area for y tick labels, and below it for t labels. */
+export const MARGIN = { left: 52, right: 10, top: 8, bottom: 24 };
+
+/** Horizontal grid lines and left tick labels for y ticks at `position(v)`. */
+export function drawYAxis(ctx: Context, box: Box, ticks: Ticks, position: (v: number) => number, style: AxisStyle): void {
+  ctx.font = style.font;
+  ctx.textAlign = 'right';
+  ctx.textBaseline = 'middle';
+  ctx.lineWidth = 1;
+  for (const v of ticks.values) {
+    const y = Math.round(position(v)) + 0.5;
+    if (y < box.y - 0.5 || y > box.y + box.height + 0.5) continue;
+    ctx.strokeStyle = v === 0 ? style.axis : style.grid;
+    ctx.globalAlpha = v === 0 ? 0.45 : 1;
+    ctx.beginPath();
+    ctx.moveTo(box.x, y);
+    ctx.lineTo(box.x + box.width, y);
+    ctx.stroke();
+    ctx.globalAlpha = 1;
+    ctx.fillStyle = style.text;
+    ctx.fillText(ticks.format(v), box.x - 6, y);
+  }
+  frameLine(ctx, style, box.x + 0.5, box.y, box.x + 0.5, box.y + box.height);
+}
+
+/** Tick marks and labels under the plot area for t ticks at `position(v)`, and the axis name. */
+export function drawXAxis(
+  ctx: Context,
+  box: Box,
+  ticks: Ticks,
+  position: (v: number) => number,
+  style: AxisStyle,
+  name = 't',
+): void {
+  const bottom = box.y + box.height;
+  ctx.font = style.font;
+  ctx.textAlign = 'center';
+  ctx.textBaseline = 'top';
+  ctx.lineWidth = 1;
+  ctx.strokeStyle = style.axis;
+  ctx.fillStyle = style.text;
+  ctx.beginPath();
+  for (const v of ticks.values) {
+    const x = Math.round(position(v)) + 0.5;
+    if (x < box.x - 0.5 || x > box.x + box.width + 0.5) continue;
+    ctx.moveTo(x, bottom);
+    ctx.lineTo(x, bottom + 4);
+  }
+  ctx.stroke();
+  ticks.values.forEach((v) => {
+    const x = Math.round(position(v)) + 0.5;
+    if (x >= box.x - 0.5 && x <= box.x + box.width - 14) ctx.fillText(ticks.format(v), x, bottom + 6);
+  });
+  ctx.textAlign = 'right';
+  ctx.fillText(name, box.x + box.width, bottom + 6);
+  frameLine(ctx, style, box.x, bottom + 0.5, box.x + box.width, bottom + 0.5);
+}
+
+function frameLine(ctx: Context, style: AxisStyle, x0: number, y0: number, x1: number, y1: number): void {
+  ctx.strokeStyle = style.axis;
+  ctx.globalAlpha = 0.6;
+  ctx.beginPath();
+  ctx.moveTo(x0, y0);
+  ctx.lineTo(x1, y1);
+  ctx.stroke();
+  ctx.globalAlpha = 1;
+}

@@ -1,0 +1,158 @@
+import type { Context } from './canvas.ts';
+
+/**
+ * Min/max decimation by pixel column: however many samples fall into one
+ * device-pixel column, each series is drawn there as one vertical stroke
+ * from its smallest to its largest value, joined to the neighbouring columns
+ * through its first and last value. The picture is the same as drawing every
+ * sample (a line's extent within a column is all a column can show), and the
+ * drawing work per frame is bounded by columns × series, not samples.
+ *
+ * Samples go in as column(c) once per sample, then value(s, y) for every
+ * series s with y already in pixels. Completed columns queue up and are
+ * handed to `sink` when the queue is full and at end(); the sink strokes them
+ * (strokeColumns) and the decimator then forgets them, keeping only each
+ * series' last point so the next batch joins on. All storage is allocated
+ * up front: nothing is allocated per sample.
+ */
+export class ColumnDecimator {
+  /** pending (completed) columns */
+  count = 0;
+  /** absolute column index of pending column i */
+  readonly columns: Float64Array;
+  /** per pending column i and series s, at i·series + s: NaN `first` marks a gap */
+  readonly first: Float64Array;
+  readonly min: Float64Array;
+  readonly max: Float64Array;
+  readonly last: Float64Array;
+  /** each series' last drawn point, where the next stroke starts; NaN y lifts the pen */
+  readonly penX: Float64Array;
+  readonly penY: Float64Array;
+
+  private current = NaN;
+  private readonly cFirst: Float64Array;
+  private readonly cMin: Float64Array;
+  private readonly cMax: Float64Array;
+  private readonly cLast: Float64Array;
+
+  constructor(
+    readonly series: number,
+    readonly capacity: number,
+    private readonly sink: (decimator: ColumnDecimator) => void,
+    /** pixel values are clamped to ±limit so a wild value cannot make the canvas choke */
+    private readonly limit = 1e5,
+  ) {
+    const n = series * capacity;
+    this.columns = new Float64Array(capacity);
+    this.first = new Float64Array(n);
+    this.min = new Float64Array(n);
+    this.max = new Float64Array(n);
+    this.last = new Float64Array(n);
+    this.penX = new Float64Array(series).fill(NaN);
+    this.penY = new Float64Array(series).fill(NaN);
+    this.cFirst = new Float64Array(series).fill(NaN);
+    this.cMin = new Float64Array(series);
+    this.cMax = new Float64Array(series);
+    this.cLast = new Float64Array(series);
+  }
+
+  /** Starts the next sample, in pixel column c (non-decreasing from sample to sample). */
+  column(c: number): void {
+    if (c === this.current) return;
+    if (this.current === this.current) this.commit();
+    this.current = c;
+  }
+
+  /** Adds series s's value at the current sample, in pixels; non-finite values leave a gap. */
+  value(s: number, y: number): void {
+    if (y - y !== 0) return;
+    const limit = this.limit;
+    const v = y < -limit ? -limit : y > limit ? limit : y;
+    if (this.cFirst[s] !== this.cFirst[s]) {
+      this.cFirst[s] = v;
+      this.cMin[s] = v;
+      this.cMax[s] = v;
+    } else if (v < this.cMin[s]) this.cMin[s] = v;
+    else if (v > this.cMax[s]) this.cMax[s] = v;
+    this.cLast[s] = v;
+  }
+
+  /** Completes the current column (even if more samples may land in it later) and flushes the queue. */
+  end(): void {
+    if (this.current === this.current) this.commit();
+    this.current = NaN;
+    if (this.count > 0) this.flush();
+  }
+
+  /** Lifts every pen: the next samples do not join onto what was drawn before. */
+  penUp(): void {
+    this.penY.fill(NaN);
+  }
+
+  /** Forgets everything, pending columns and pens included. */
+  reset(): void {
+    this.count = 0;
+    this.current = NaN;
+    this.cFirst.fill(NaN);
+    this.penUp();
+  }
+
+  private commit(): void {
+    if (this.count === this.capacity) this.flush();
+    const { series: n } = this;
+    const at = this.count * n;
+    this.columns[this.count] = this.current;
+    for (let s = 0; s < n; s++) {
+      this.first[at + s] = this.cFirst[s];
+      this.min[at + s] = this.cMin[s];
+      this.max[at + s] = this.cMax[s];
+      this.last[at + s] = this.cLast[s];
+    }
+    this.cFirst.fill(NaN);
+    this.count++;
+  }
+
+  private flush(): void {
+    this.sink(this);
+    const { series: n, count } = this;
+    const x = this.columns[count - 1];
+    const at = (count - 1) * n;
+    for (let s = 0; s < n; s++) {
+      this.penX[s] = x;
+      this.penY[s] = this.first[at + s] === this.first[at + s] ? this.last[at + s] : NaN;
+    }
+    this.count = 0;
+  }
+}
+
+/**
+ * Strokes series s of the pending columns as one path, shifted left by
+ * `offset` columns, at pixel centres (x + 0.5). The caller sets the style.
+ */
+export function strokeColumns(ctx: Context, d: ColumnDecimator, s: number, offset: number): void {
+  const { series: n, count, columns, first, min, max, last } = d;
+  let down = d.penY[s] === d.penY[s];
+  ctx.beginPath();
+  if (down) ctx.moveTo(d.penX[s] - offset + 0.5, d.penY[s]);
+  for (let i = 0; i < count; i++) {
+    const k = i * n + s;
+    const f = first[k];
+    if (f !== f) {
+      down = false;
+      continue;
+    }
+    const x = columns[i] - offset + 0.5;
+    if (down) ctx.lineTo(x, f);
+    else ctx.moveTo(x, f);
+    const lo = min[k];
+    const hi = max[k];
+    const l = last[k];
+    if (lo < hi) {
+      if (lo !== f) ctx.lineTo(x, lo);
+      ctx.lineTo(x, hi);
+      if (l !== hi) ctx.lineTo(x, l);
+    } else if (!down) ctx.lineTo(x + 0.01, f); // a lone point still leaves a dot
+    down = true;
+  }
+  ctx.stroke();
+}

@@ -1,0 +1,100 @@
+import { scaleLinear } from 'd3-scale';
+
+/**
+ * A rectangle of the data plane, [x0, x1] × [y0, y1]. Plots keep one per
+ * panel and mutate it in place so that per-frame bookkeeping allocates
+ * nothing; the functions that return a new extent run only when a plot
+ * grows or is laid out.
+ */
+export interface Extent {
+  x0: number;
+  x1: number;
+  y0: number;
+  y1: number;
+}
+
+/** How an axis maps data to pixels: straight, or the paper's m(y) = ln(1 + |y|/c)·sgn y. */
+export type AxisKind = 'linear' | 'symlog';
+
+/** An extent that contains nothing: including any point makes it that point. */
+export function emptyExtent(): Extent {
+  return { x0: Infinity, x1: -Infinity, y0: Infinity, y1: -Infinity };
+}
+
+export function isEmpty(e: Extent): boolean {
+  return !(e.x0 <= e.x1 && e.y0 <= e.y1);
+}
+
+/** Widens `e` in place to contain (x, y); non-finite points are ignored. */
+export function includePoint(e: Extent, x: number, y: number): void {
+  if (!Number.isFinite(x) || !Number.isFinite(y)) return;
+  if (x < e.x0) e.x0 = x;
+  if (x > e.x1) e.x1 = x;
+  if (y < e.y0) e.y0 = y;
+  if (y > e.y1) e.y1 = y;
+}
+
+/** Whether `inner` lies within `outer` (an empty `inner` always does). */
+export function contains(outer: Extent, inner: Extent): boolean {
+  if (isEmpty(inner)) return true;
+  return inner.x0 >= outer.x0 && inner.x1 <= outer.x1 && inner.y0 >= outer.y0 && inner.y1 <= outer.y1;
+}
+
+/** The forward transform of an axis kind; symlog's is d3's scaleSymlog transform with constant c. */
+export function transform(kind: AxisKind, v: number, c = 1): number {
+  return kind === 'symlog' ? Math.sign(v) * Math.log1p(Math.abs(v / c)) : v;
+}
+
+/** The inverse of `transform`. */
+export function untransform(kind: AxisKind, u: number, c = 1): number {
+  return kind === 'symlog' ? Math.sign(u) * Math.expm1(Math.abs(u)) * c : u;
+}
+
+/**
+ * [lo, hi] widened by `headroom` of its span on each side, in the axis's
+ * transformed space, and rounded outward to tick values for a linear axis.
+ * A zero span (the first sample, or a coordinate that has not moved yet) is
+ * given a width proportional to its size, so that the first frames do not
+ * zoom onto a single point.
+ */
+export function padInterval(lo: number, hi: number, headroom: number, kind: AxisKind = 'linear', c = 1): [number, number] {
+  let a = transform(kind, lo, c);
+  let b = transform(kind, hi, c);
+  if (!(b - a > 0)) {
+    const half = Math.max(Math.abs(a) * 0.1, kind === 'symlog' ? 0.5 : 1e-6);
+    a -= half;
+    b += half;
+  }
+  const pad = (b - a) * headroom;
+  a = untransform(kind, a - pad, c);
+  b = untransform(kind, b + pad, c);
+  if (kind === 'linear') [a, b] = scaleLinear().domain([a, b]).nice(8).domain() as [number, number];
+  return [a, b];
+}
+
+/** The padded union of `current` (may be empty) and `data`: what an auto-extent grows to. */
+export function growExtent(
+  current: Extent,
+  data: Extent,
+  headroom: number,
+  xKind: AxisKind = 'linear',
+  yKind: AxisKind = 'linear',
+  c = 1,
+): Extent {
+  const [x0, x1] = padInterval(Math.min(current.x0, data.x0), Math.max(current.x1, data.x1), headroom, xKind, c);
+  const [y0, y1] = padInterval(Math.min(current.y0, data.y0), Math.max(current.y1, data.y1), headroom, yKind, c);
+  return { x0, x1, y0, y1 };
+}
+
+/**
+ * `e` widened about its centre so that one data unit spans as many pixels
+ * across as up in a width × height box: a circle stays round.
+ */
+export function fitEqualAspect(e: Extent, width: number, height: number): Extent {
+  const perPixel = Math.max((e.x1 - e.x0) / width, (e.y1 - e.y0) / height);
+  const cx = (e.x0 + e.x1) / 2;
+  const cy = (e.y0 + e.y1) / 2;
+  const hx = (perPixel * width) / 2;
+  const hy = (perPixel * height) / 2;
+  return { x0: cx - hx, x1: cx + hx, y0: cy - hy, y1: cy + hy };
+}

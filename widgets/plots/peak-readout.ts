@@ -1,0 +1,69 @@
+import type { Peak } from '../core/peaks.ts';
+
+/**
+ * Text of the spectrum readouts. A peak is given as f in cycles per time
+ * unit and as the angular frequency ω = 2πf in radians per time unit (the
+ * form a chapter's formula usually predicts), with its amplitude.
+ */
+
+/** `v` to `decimals` places, with a true minus sign and no '-0'. */
+export function fixed(v: number, decimals: number): string {
+  if (!Number.isFinite(v)) return String(v);
+  const s = v.toFixed(decimals);
+  return /^-0\.?0*$/.test(s) ? s.slice(1) : s.replace('-', '−');
+}
+
+/** `v` to `digits` significant digits, plain for ordinary sizes and as a×10ⁿ otherwise. */
+export function significant(v: number, digits = 4): string {
+  if (!Number.isFinite(v)) return String(v);
+  if (v === 0) return '0';
+  const a = Math.abs(v);
+  if (a >= 1e-4 && a < 1e6) return Number(v.toPrecision(digits)).toString().replace('-', '−');
+  const [mantissa, exponent] = v.toExponential(digits - 1).split('e');
+  return `${mantissa.replace('-', '−')}×10^${Number(exponent)}`;
+}
+
+/**
+ * Decimal places worth showing for a frequency measured over `duration`
+ * time units: the refined peak is good to a small fraction of the
+ * resolution 1/duration, so one place below a twentieth of it, 2 to 6.
+ */
+export function frequencyDecimals(duration: number): number {
+  if (!(duration > 0)) return 3;
+  const step = 1 / duration / 20;
+  return Math.max(2, Math.min(6, Math.ceil(-Math.log10(step))));
+}
+
+export interface PeakText {
+  frequency: string;
+  omega: string;
+  amplitude: string;
+}
+
+/** The three numbers of one peak as text. */
+export function describePeak(peak: Peak, duration: number): PeakText {
+  const decimals = frequencyDecimals(duration);
+  return {
+    frequency: fixed(peak.frequency, decimals),
+    omega: fixed(2 * Math.PI * peak.frequency, Math.max(1, decimals - 1)),
+    amplitude: significant(peak.amplitude, 3),
+  };
+}
+
+/** One line per peak, e.g. "f = 1.518 cycles per time unit · ω = 2πf = 9.54 · amplitude 0.998". */
+export function peakLine(peak: Peak, duration: number): string {
+  const t = describePeak(peak, duration);
+  return `f = ${t.frequency} cycles per time unit · ω = 2πf = ${t.omega} rad per time unit · amplitude ${t.amplitude}`;
+}
+
+/** The line under the peaks: what the spectrum was computed from. */
+export function basisLine(window: 'hamming' | 'none', t0: number, duration: number, samples: number, stride: number): string {
+  const decimals = Math.max(0, Math.min(4, 2 - Math.floor(Math.log10(Math.max(duration, 1e-9)))));
+  const parts = [
+    window === 'hamming' ? 'Hamming window' : 'no window',
+    `t = ${fixed(t0, decimals)} … ${fixed(t0 + duration, decimals)}`,
+    `${samples.toLocaleString('en')} samples${stride > 1 ? ` (means of ${stride})` : ''}`,
+    `resolution 1/T = ${significant(1 / duration, 2)}`,
+  ];
+  return parts.join(' · ');
+}

@@ -1,0 +1,77 @@
+import type { Extent } from './extent.ts';
+import type { Track } from './plane-panels.ts';
+
+/** A pair of record series drawn as (x, y): state names such as 'q0', or exact columns such as 'q0[3]'. */
+export type Pair = readonly [string, string];
+
+/** An extent as plot options take it. */
+export interface ExtentOption {
+  x: readonly [number, number];
+  y: readonly [number, number];
+}
+
+export function toExtent(option: ExtentOption | undefined, what: string): Extent | undefined {
+  if (option === undefined) return undefined;
+  const [x0, x1] = option.x ?? [];
+  const [y0, y1] = option.y ?? [];
+  if (![x0, x1, y0, y1].every(Number.isFinite) || !(x1 > x0) || !(y1 > y0)) {
+    throw new Error(`${what} must be {x: [lo, hi], y: [lo, hi]} with lo < hi, not ${JSON.stringify(option)}`);
+  }
+  return { x0, x1, y0, y1 };
+}
+
+/**
+ * The record columns a series name stands for: the column of that exact
+ * name, or, in a batch of `count` trajectories, `name[j]` for every j.
+ */
+export function columnsOf(columns: readonly string[], name: string, count: number): number[] {
+  const exact = columns.indexOf(name);
+  if (exact > 0) return [exact];
+  if (count > 1) {
+    const all = Array.from({ length: count }, (_, j) => columns.indexOf(`${name}[${j}]`));
+    if (all.every((c) => c > 0)) return all;
+  }
+  const shown = columns.slice(1, 9).join(', ') + (columns.length > 9 ? ', …' : '');
+  throw new Error(`no series named “${name}”; the record has ${shown}`);
+}
+
+/** One track per trajectory for a pair: x and y columns matched trajectory by trajectory. */
+export function tracksOf(columns: readonly string[], pair: Pair, count: number, group: (j: number) => number): Track[] {
+  const xs = columnsOf(columns, pair[0], count);
+  const ys = columnsOf(columns, pair[1], count);
+  if (xs.length !== ys.length) {
+    throw new Error(`“${pair[0]}” is ${xs.length} series and “${pair[1]}” is ${ys.length}; a pair needs as many of each`);
+  }
+  return xs.map((x, j) => ({ x, y: ys[j], group: group(j) }));
+}
+
+/**
+ * The bodies of a configuration space by default: consecutive coordinates
+ * paired as (x, y), (q0, q1), (q2, q3), …; an odd last one is left out.
+ */
+export function defaultBodies(names: readonly string[], dof: number): Pair[] {
+  if (dof < 2) {
+    throw new Error('this model has one coordinate, so its motion is along a line: a time plot or the phase portrait shows it better');
+  }
+  const bodies: Pair[] = [];
+  for (let i = 0; i + 1 < dof; i += 2) bodies.push([names[i], names[i + 1]]);
+  return bodies;
+}
+
+/** The phase-plane pairs (q_i, p_i): all degrees of freedom by default, or the chosen indices or pairs. */
+export function phasePairs(names: readonly string[], dof: number, chosen?: readonly (number | Pair)[]): Pair[] {
+  const indices = chosen ?? Array.from({ length: dof }, (_, i) => i);
+  return indices.map((c) => {
+    if (typeof c !== 'number') return c;
+    if (!Number.isInteger(c) || c < 0 || c >= dof) throw new Error(`pair ${c} does not exist: the model has degrees of freedom 0 … ${dof - 1}`);
+    return [names[c], names[dof + c]] as const;
+  });
+}
+
+/** An axis title for the pairs sharing it: the one name, or the names listed. */
+export function axisTitle(names: readonly string[], generic: string): string {
+  const unique = [...new Set(names)];
+  if (unique.length === 1) return unique[0];
+  const list = unique.length <= 3 ? unique.join(', ') : `${unique.slice(0, 2).join(', ')}, …`;
+  return `${generic} (${list})`;
+}

@@ -1,0 +1,140 @@
+import { makeMapping, type Mapping } from './axis-scale.ts';
+import { MARGIN, type Rect } from './draw-axes.ts';
+import { contains, emptyExtent, fitEqualAspect, growExtent, isEmpty, type AxisKind, type Extent } from './extent.ts';
+import { makePens, type Pens } from './trace.ts';
+
+/** One line on a plane plot: the record columns of its x and y, and its colour group. */
+export interface Track {
+  x: number;
+  y: number;
+  group: number;
+}
+
+/** What a caller asks of one panel of a plane plot (a trajectory, or one phase portrait). */
+export interface PanelSpec {
+  tracks: readonly Track[];
+  xLabel: string;
+  yLabel: string;
+  /** legend entries, one per colour group shown */
+  legend: readonly { label: string; group: number }[];
+  title?: string;
+  xKind: AxisKind;
+  yKind: AxisKind;
+  /** symlog constant c: the axis is linear within about ±c */
+  constant: number;
+  /** one data unit as long across as up */
+  equal: boolean;
+  /** a fixed extent; otherwise the extent grows to fit the data */
+  extent?: Extent;
+  /** the largest extent growth may reach */
+  limit?: Extent;
+}
+
+/** A panel's drawing state: its tracks grouped by colour, pens, extent and the mappings derived from it. */
+export interface Panel {
+  readonly spec: PanelSpec;
+  /** track columns ordered by group; track k's pen is slot k */
+  readonly xs: Int32Array;
+  readonly ys: Int32Array;
+  /** group g's tracks are k in [starts[i], starts[i + 1]) where groups[i] = g */
+  readonly groups: readonly number[];
+  readonly starts: readonly number[];
+  readonly pens: Pens;
+  /** the data extent fitted so far (auto) or the fixed one */
+  fitted: Extent;
+  /** what is shown: `fitted` after the equal-aspect fit */
+  shown: Extent;
+  rect: Rect;
+  mx: Mapping;
+  my: Mapping;
+  /** scratch for the extent of each frame's new samples */
+  readonly fresh: Extent;
+}
+
+/** Fraction of the data span added on each side when an auto extent grows. */
+export const HEADROOM = 0.08;
+
+export function makePanel(spec: PanelSpec): Panel {
+  const ordered = [...spec.tracks].sort((a, b) => a.group - b.group);
+  const groups: number[] = [];
+  const starts: number[] = [];
+  ordered.forEach((t, k) => {
+    if (groups[groups.length - 1] !== t.group) {
+      groups.push(t.group);
+      starts.push(k);
+    }
+  });
+  starts.push(ordered.length);
+  const rect = { left: 0, top: 0, width: 1, height: 1 };
+  const identity = makeMapping('linear', [0, 1], [0, 1]);
+  return {
+    spec,
+    xs: Int32Array.from(ordered, (t) => t.x),
+    ys: Int32Array.from(ordered, (t) => t.y),
+    groups,
+    starts,
+    pens: makePens(ordered.length),
+    fitted: spec.extent ? { ...spec.extent } : emptyExtent(),
+    shown: { x0: 0, x1: 1, y0: 0, y1: 1 },
+    rect,
+    mx: identity,
+    my: identity,
+    fresh: emptyExtent(),
+  };
+}
+
+/** Grid columns for `count` panels in a column `width` px wide: two side by side when there is room. */
+export function gridColumns(count: number, width: number): number {
+  return count > 1 && width >= 520 ? 2 : 1;
+}
+
+/** The plotting rectangle of panel i of `count` in a width × height canvas. */
+export function panelRect(i: number, count: number, width: number, height: number): Rect {
+  const columns = gridColumns(count, width);
+  const rows = Math.ceil(count / columns);
+  const cellWidth = width / columns;
+  const cellHeight = height / rows;
+  const left = (i % columns) * cellWidth + MARGIN.left;
+  const top = Math.floor(i / columns) * cellHeight + MARGIN.top;
+  return {
+    left,
+    top,
+    width: Math.max(10, cellWidth - MARGIN.left - MARGIN.right),
+    height: Math.max(10, cellHeight - MARGIN.top - MARGIN.bottom),
+  };
+}
+
+/** Clamps `e` in place to `limit`. */
+function clampTo(e: Extent, limit: Extent): void {
+  e.x0 = Math.max(e.x0, limit.x0);
+  e.x1 = Math.min(e.x1, limit.x1);
+  e.y0 = Math.max(e.y0, limit.y0);
+  e.y1 = Math.min(e.y1, limit.y1);
+}
+
+/**
+ * Grows an auto panel's fitted extent when `panel.fresh` (the new samples'
+ * extent) is not all shown; returns whether it grew, in which case the
+ * panel must be placed again and redrawn.
+ */
+export function growPanel(panel: Panel): boolean {
+  const { spec, fresh } = panel;
+  if (spec.extent || isEmpty(fresh)) return false;
+  if (spec.limit) clampTo(fresh, spec.limit);
+  if (!isEmpty(panel.fitted) && contains(panel.shown, fresh)) return false;
+  panel.fitted = growExtent(panel.fitted, fresh, HEADROOM, spec.xKind, spec.yKind, spec.constant);
+  if (spec.limit) clampTo(panel.fitted, spec.limit);
+  return true;
+}
+
+/** Sets the panel's rectangle, shown extent and mappings for the current fitted extent. */
+export function placePanel(panel: Panel, rect: Rect): void {
+  const { spec } = panel;
+  const data = isEmpty(panel.fitted) ? { x0: -1, x1: 1, y0: -1, y1: 1 } : panel.fitted;
+  const linear = spec.xKind === 'linear' && spec.yKind === 'linear';
+  const shown = spec.equal && linear ? fitEqualAspect(data, rect.width, rect.height) : { ...data };
+  panel.rect = rect;
+  panel.shown = shown;
+  panel.mx = makeMapping(spec.xKind, [shown.x0, shown.x1], [rect.left, rect.left + rect.width], spec.constant);
+  panel.my = makeMapping(spec.yKind, [shown.y0, shown.y1], [rect.top + rect.height, rect.top], spec.constant);
+}

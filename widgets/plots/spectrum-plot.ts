@@ -1,0 +1,111 @@
+import type { Peak } from '../core/peaks.ts';
+import type { Spectrum } from '../core/spectrum.ts';
+import { makeMapping, type Mapping } from './axis-scale.ts';
+import { crisp, drawAxes, drawLegend, fontOf, MARGIN, type LegendItem, type Rect } from './draw-axes.ts';
+import { traceSeries } from './spectrum-trace.ts';
+import { seriesColor, type Theme } from './view-theme.ts';
+
+/** Which parts of the transform X_k are drawn: |X|, Re X and Im X, or all three. */
+export type SpectrumShow = 'magnitude' | 'reim' | 'both';
+
+/** Everything one picture of a spectrum is drawn from. */
+export interface SpectrumPicture {
+  spectrum: Spectrum;
+  peaks: readonly Peak[];
+  show: SpectrumShow;
+  maxFrequency: number;
+  /** the amplitude axis reaches this (and −this when Re and Im are shown) */
+  yMax: number;
+  theory?: { frequency: number; label: string };
+  series: string;
+}
+
+/** The frequency axis and the amplitude axis of a spectrum in a width × height canvas. */
+export function spectrumMappings(width: number, height: number, picture: Pick<SpectrumPicture, 'maxFrequency' | 'yMax' | 'show'>): { rect: Rect; mx: Mapping; my: Mapping } {
+  const rect = { left: MARGIN.left, top: MARGIN.top, width: width - MARGIN.left - MARGIN.right, height: height - MARGIN.top - MARGIN.bottom };
+  const mx = makeMapping('linear', [0, picture.maxFrequency], [rect.left, rect.left + rect.width]);
+  const y0 = picture.show === 'magnitude' ? 0 : -picture.yMax;
+  const my = makeMapping('linear', [y0, picture.yMax], [rect.top + rect.height, rect.top]);
+  return { rect, mx, my };
+}
+
+/** The last bin worth drawing for an axis that ends at maxFrequency: one past it, so the line reaches the edge. */
+export function lastBin(s: Spectrum, maxFrequency: number): number {
+  return Math.min(s.frequency.length - 1, Math.ceil(maxFrequency / s.binWidth) + 1);
+}
+
+/** Draws axes, the chosen lines, the theory marker and numbered peak marks. */
+export function drawSpectrum(g: CanvasRenderingContext2D, width: number, height: number, picture: SpectrumPicture, theme: Theme, dpr: number): void {
+  const { spectrum: s, show } = picture;
+  const { rect, mx, my } = spectrumMappings(width, height, picture);
+  drawAxes(g, rect, mx, my, theme, { xLabel: 'frequency f (cycles per time unit)', yLabel: show === 'magnitude' ? 'amplitude' : 'amplitude, Re, Im' }, dpr);
+  const magnitude = theme.accent;
+  const real = show === 'both' ? seriesColor(theme, 1) : theme.accent;
+  const legend: LegendItem[] = [];
+  if (show !== 'magnitude') legend.push({ label: `Re`, color: real }, { label: `Im`, color: theme.muted });
+  if (show !== 'reim') legend.unshift({ label: `|X|`, color: magnitude });
+  drawLegend(g, rect, legend, theme, `spectrum of ${picture.series}`);
+
+  const end = lastBin(s, picture.maxFrequency);
+  g.save();
+  g.beginPath();
+  g.rect(rect.left, rect.top, rect.width, rect.height);
+  g.clip();
+  const line = (values: Float64Array, color: string, widthPx: number) => {
+    g.beginPath();
+    traceSeries(g, s.frequency, values, end, mx, my);
+    g.strokeStyle = color;
+    g.lineWidth = widthPx;
+    g.stroke();
+  };
+  if (show !== 'magnitude') {
+    line(s.im, theme.muted, 1.1);
+    line(s.re, real, 1.3);
+  }
+  if (show !== 'reim') line(s.amplitude, magnitude, 1.75);
+  if (picture.theory) drawTheory(g, rect, mx, picture.theory, theme, dpr);
+  g.restore();
+  drawPeakMarks(g, rect, mx, my, picture.peaks, picture.maxFrequency, theme);
+}
+
+function drawTheory(g: CanvasRenderingContext2D, rect: Rect, mx: Mapping, theory: { frequency: number; label: string }, theme: Theme, dpr: number): void {
+  const x = crisp(mx.scale(theory.frequency), dpr);
+  g.save();
+  g.setLineDash([5, 4]);
+  g.strokeStyle = theme.fg;
+  g.globalAlpha = 0.75;
+  g.lineWidth = 1;
+  g.beginPath();
+  g.moveTo(x, rect.top);
+  g.lineTo(x, rect.top + rect.height);
+  g.stroke();
+  g.globalAlpha = 1;
+  g.fillStyle = theme.fg;
+  g.font = fontOf(theme, 11.5);
+  g.textBaseline = 'top';
+  const right = x + 6 + g.measureText(theory.label).width > rect.left + rect.width;
+  g.textAlign = right ? 'right' : 'left';
+  g.fillText(theory.label, right ? x - 5 : x + 5, rect.top + 5);
+  g.restore();
+}
+
+function drawPeakMarks(g: CanvasRenderingContext2D, rect: Rect, mx: Mapping, my: Mapping, peaks: readonly Peak[], maxFrequency: number, theme: Theme): void {
+  g.save();
+  g.font = fontOf(theme, 11, 600);
+  g.textAlign = 'center';
+  g.textBaseline = 'bottom';
+  peaks.forEach((p, i) => {
+    if (!(p.frequency <= maxFrequency)) return;
+    const x = mx.scale(p.frequency);
+    const y = Math.max(rect.top + 16, my.scale(p.amplitude) - 5);
+    g.fillStyle = theme.fg;
+    g.beginPath();
+    g.moveTo(x - 4, y - 7);
+    g.lineTo(x + 4, y - 7);
+    g.lineTo(x, y);
+    g.closePath();
+    g.fill();
+    g.fillText(String(i + 1), x, y - 8);
+  });
+  g.restore();
+}

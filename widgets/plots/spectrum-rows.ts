@@ -1,0 +1,78 @@
+import type { TrajectoryRecord } from '../core/record.ts';
+
+/** Which part of the record a spectrum is taken over: the latest `span` time units, a fixed [t0, t1], or all of it. */
+export type SpanOption = number | readonly [number, number];
+
+/** The rows a spectrum uses, and how they are thinned. */
+export interface RowChoice {
+  /** first row used */
+  from: number;
+  /** one past the last row used */
+  to: number;
+  /** each spectrum sample is the mean of this many consecutive rows */
+  stride: number;
+  /** (to − from) / stride */
+  samples: number;
+  /** time between spectrum samples: stride times the record's spacing */
+  interval: number;
+  /** the time the samples cover, samples × interval */
+  duration: number;
+}
+
+/** Fewer samples than this make no useful spectrum: the 'not enough samples yet' state. */
+export const MIN_SAMPLES = 64;
+
+/** The part of a record `chooseRows` reads. */
+export type TimedRows = Pick<TrajectoryRecord, 'length' | 'time' | 'range'>;
+
+/**
+ * Chooses rows for a spectrum over `span`, thinned by block means to at most
+ * `maxSamples` (a mean over `stride` rows is a mild low-pass, so that the
+ * thinning does not alias high frequencies onto the plot the way picking
+ * every stride-th row would). Blocks are aligned to the newest row, which
+ * is always used. Returns null when there are fewer than MIN_SAMPLES.
+ */
+export function chooseRows(rows: TimedRows, span: SpanOption | undefined, maxSamples: number): RowChoice | null {
+  const n = rows.length;
+  if (n < 2) return null;
+  let [from, to] = [0, n];
+  if (typeof span === 'number') {
+    const last = rows.time(n - 1);
+    [from, to] = rows.range(last - span, last);
+  } else if (span) {
+    [from, to] = rows.range(span[0], span[1]);
+  }
+  const available = to - from;
+  if (available < MIN_SAMPLES) return null;
+  const stride = Math.max(1, Math.ceil(available / Math.max(MIN_SAMPLES, maxSamples)));
+  const samples = Math.floor(available / stride);
+  from = to - samples * stride;
+  const spacing = (rows.time(to - 1) - rows.time(from)) / (to - from - 1);
+  if (!(spacing > 0)) return null;
+  const interval = spacing * stride;
+  return { from, to, stride, samples, interval, duration: samples * interval };
+}
+
+/**
+ * Writes the chosen samples of `column` into out[0 … samples) (block means
+ * when stride > 1) and returns a view of that many values. `out` must hold
+ * at least `choice.samples`.
+ */
+export function gatherSamples(record: TrajectoryRecord, column: number, choice: RowChoice, out: Float64Array): Float64Array {
+  const { from, to, stride } = choice;
+  const width = record.width;
+  let k = 0;
+  let sum = 0;
+  let inBlock = 0;
+  for (const s of record.slices(from, to)) {
+    for (let r = s.from; r < s.to; r++) {
+      sum += s.data[r * width + column];
+      if (++inBlock === stride) {
+        out[k++] = sum / stride;
+        sum = 0;
+        inBlock = 0;
+      }
+    }
+  }
+  return out.subarray(0, k);
+}

@@ -1,0 +1,43 @@
+import type { Peak } from '../core/peaks.ts';
+
+/** The smallest of 1, 2, 2.5, 5 × 10^k that is ≥ v. */
+export function niceCeil(v: number): number {
+  if (!(v > 0) || !Number.isFinite(v)) return 1;
+  const decade = 10 ** Math.floor(Math.log10(v));
+  for (const m of [1, 2, 2.5, 5, 10]) if (m * decade >= v * (1 - 1e-12)) return m * decade;
+  return 10 * decade;
+}
+
+/**
+ * The upper end of the frequency axis when the chapter does not fix it. As
+ * the paper's §5.2 says, the interesting part of a spectrum is usually the
+ * low frequencies, so the axis reaches a little past the significant peaks
+ * (those of at least 2% of the strongest) and the theoretical marker, to at
+ * least 2.5× the strongest peak, on a round number, and never past Nyquist.
+ * It keeps `current` while that still shows everything without wasting more
+ * than 60% of the width, so the axis does not twitch at each recompute.
+ */
+export function chooseMaxFrequency(peaks: readonly Peak[], nyquist: number, theory: number | undefined, current: number | undefined): number {
+  let target = nyquist;
+  if (peaks.length > 0) {
+    const strongest = peaks[0];
+    let highest = strongest.frequency;
+    for (const p of peaks) if (p.amplitude >= 0.02 * strongest.amplitude && p.frequency > highest) highest = p.frequency;
+    target = Math.max(2.5 * strongest.frequency, 1.4 * highest);
+  }
+  if (theory !== undefined && theory > 0) target = Math.max(target, 1.3 * theory);
+  target = Math.min(nyquist, niceCeil(target));
+  if (current !== undefined && current >= target && current <= 2.5 * target && current <= nyquist) return current;
+  return target;
+}
+
+/**
+ * An axis limit that follows `value` up at once but comes down only when
+ * `value` falls below half of it, so the plot does not rescale at every
+ * recompute of a slowly varying spectrum.
+ */
+export function steadyLimit(value: number, current: number | undefined): number {
+  const wanted = value > 0 && Number.isFinite(value) ? value * 1.12 : 1;
+  if (current === undefined || wanted > current || wanted < 0.5 * current) return niceCeil(wanted);
+  return current;
+}

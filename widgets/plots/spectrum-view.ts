@@ -1,0 +1,244 @@
+import { findPeaks, spectrum, type Peak, type Spectrum, type WindowName } from '../core/spectrum.ts';
+import type { Simulation } from '../core/simulation.ts';
+import type { View } from '../simulator/view.ts';
+import { drawAxes, fontOf } from './draw-axes.ts';
+import { basisLine, fixed, frequencyDecimals, peakLine } from './peak-readout.ts';
+import { columnsOf } from './plane-columns.ts';
+import { controlRow, selectControl, seriesChoices, type SelectControl } from './spectrum-controls.ts';
+import { drawSpectrum, lastBin, spectrumMappings, type SpectrumPicture, type SpectrumShow } from './spectrum-plot.ts';
+import { chooseRows, gatherSamples, MIN_SAMPLES, type RowChoice, type SpanOption } from './spectrum-rows.ts';
+import { chooseMaxFrequency, steadyLimit } from './spectrum-scale.ts';
+import { SpectrumReadout } from './spectrum-readout.ts';
+import { ViewFrame } from './view-frame.ts';
+
+export interface SpectrumViewOptions {
+  /** the record series to transform (a state name such as 'q', or a column such as 'q0[3]'); default the first coordinate */
+  series?: string;
+  /** default 'hamming', the paper's eq. 6 */
+  window?: WindowName;
+  /** the latest `span` time units of the record, or [t0, t1]; default the whole record */
+  span?: SpanOption;
+  /** |X|, Re and Im (the paper's: Re in colour, Im grey), or both; default 'magnitude' */
+  show?: SpectrumShow;
+  /** end of the frequency axis, cycles per time unit; default: a little past the significant peaks */
+  maxFrequency?: number;
+  /** a predicted frequency (cycles per time unit) to mark, as a number or with a label */
+  theory?: number | { frequency: number; label?: string };
+  /** how many peaks to read out; default 3 */
+  peaks?: number;
+  /** milliseconds between recomputations while the simulation runs; default 250 */
+  refresh?: number;
+  /** more samples than this are thinned by block means; default 32768 */
+  maxSamples?: number;
+  /** show the series, window and Re/Im selectors; default true */
+  controls?: boolean;
+  height?: number | ((width: number) => number);
+}
+
+/** The spectrum view, with its latest result for readouts and tests. */
+export interface SpectrumView extends View {
+  /** the strongest peaks of the latest spectrum, strongest first */
+  readonly peaks: readonly Peak[];
+  readonly spectrum: Spectrum | null;
+  /** recompute now rather than at the next refresh */
+  update(): void;
+}
+
+/**
+ * The frequency domain of one series (the paper's §3.4 and §5.2): the
+ * Hamming-windowed FFT over a window of the record, recomputed a few times a
+ * second, with refined peak readouts and an optional theoretical marker.
+ */
+export function spectrumView(options: SpectrumViewOptions = {}): SpectrumView {
+  return new SpectrumViewImpl(options);
+}
+
+class SpectrumViewImpl implements SpectrumView {
+  private readonly frame: ViewFrame;
+  private readonly readout = new SpectrumReadout();
+  private readonly seriesSelect: SelectControl;
+  private simulation: Simulation | null = null;
+  private columns: readonly string[] = [];
+  private series = '';
+  private window: WindowName;
+  private show: SpectrumShow;
+  private buffer = new Float64Array(0);
+  private computedAt = -Infinity;
+  private computedTotal = -1;
+  private picture: SpectrumPicture | null = null;
+  private waiting = `Not enough samples yet`;
+  private maxFrequency: number | undefined;
+  private yMax: number | undefined;
+  peaks: readonly Peak[] = [];
+  spectrum: Spectrum | null = null;
+
+  constructor(private readonly options: SpectrumViewOptions) {
+    const { height } = options;
+    this.frame = new ViewFrame({
+      kind: 'spectrum',
+      label: 'Frequency spectrum',
+      height: (w) => (typeof height === 'number' ? height : height ? height(w) : Math.max(200, Math.min(340, Math.round(w * 0.46)))),
+    });
+    this.window = options.window ?? 'hamming';
+    this.show = options.show ?? 'magnitude';
+    this.seriesSelect = selectControl('Series', 'series', [], '', (v) => this.choose(() => (this.series = v)));
+    const windowSelect = selectControl('Window', 'window', [{ value: 'hamming', label: 'Hamming' }, { value: 'none', label: 'none (rectangular)' }], this.window, (v) =>
+      this.choose(() => (this.window = v as WindowName)),
+    );
+    const choices = [
+      { value: 'magnitude', label: '|X|' },
+      { value: 'reim', label: 'Re and Im' },
+      { value: 'both', label: '|X|, Re and Im' },
+    ];
+    const showSelect = selectControl('Show', 'show', choices, this.show, (v) => this.choose(() => (this.show = v as SpectrumShow)));
+    const element = this.frame.element;
+    if (options.controls !== false) element.prepend(controlRow(this.seriesSelect, windowSelect, showSelect));
+    element.append(this.readout.element);
+    Object.defineProperty(element, 'peaks', { get: () => this.peaks, configurable: true });
+    this.frame.onChange = () => this.simulation && this.render();
+  }
+
+  get element(): HTMLElement {
+    return this.frame.element;
+  }
+
+  draw(simulation: Simulation): void {
+    if (simulation !== this.simulation || simulation.record.columns !== this.columns) this.reset(simulation);
+    if (this.frame.measure()) this.render();
+    const { record } = simulation;
+    const total = record.dropped + record.length;
+    const now = performance.now();
+    if (total !== this.computedTotal && now - this.computedAt >= (this.options.refresh ?? 250)) this.update();
+  }
+
+  reset(simulation: Simulation): void {
+    this.simulation = simulation;
+    this.columns = simulation.record.columns;
+    this.maxFrequency = this.yMax = undefined;
+    try {
+      const wanted = this.options.series ?? simulation.model.names[0];
+      this.series = this.columns[columnsOf(this.columns, wanted, simulation.count)[0]];
+      this.frame.say(null);
+    } catch (error) {
+      this.series = '';
+      this.frame.say(error instanceof Error ? error.message : String(error));
+    }
+    this.update();
+  }
+
+  update(): void {
+    const simulation = this.simulation;
+    if (!simulation) return;
+    const { record } = simulation;
+    this.computedAt = performance.now();
+    this.computedTotal = record.dropped + record.length;
+    this.seriesSelect.setChoices(seriesChoices(this.columns, this.series), this.series);
+    const column = record.columnIndex(this.series);
+    const choice = column > 0 ? chooseRows(record, this.options.span, this.options.maxSamples ?? 32768) : null;
+    if (!choice || column <= 0) {
+      this.clearResult(`Not enough samples yet: ${Math.min(record.length, MIN_SAMPLES)} of the ${MIN_SAMPLES} needed`);
+    } else {
+      try {
+        this.computeFrom(column, choice);
+      } catch (error) {
+        this.clearResult(error instanceof Error ? error.message : String(error));
+      }
+    }
+    this.render();
+  }
+
+  canvases(): { name: string; canvas: HTMLCanvasElement }[] {
+    return [{ name: 'spectrum', canvas: this.frame.canvas }];
+  }
+
+  dispose(): void {
+    this.frame.dispose();
+    this.simulation = null;
+  }
+
+  private choose(change: () => void): void {
+    change();
+    this.maxFrequency = this.yMax = undefined;
+    this.update();
+  }
+
+  private computeFrom(column: number, choice: RowChoice): void {
+    const record = this.simulation!.record;
+    if (this.buffer.length < choice.samples) this.buffer = new Float64Array(Math.max(choice.samples, 2 * this.buffer.length));
+    const samples = gatherSamples(record, column, choice, this.buffer);
+    const s = spectrum(samples, choice.interval, { window: this.window });
+    let strongest = 0;
+    for (let k = 1; k < s.amplitude.length; k++) if (s.amplitude[k] > strongest) strongest = s.amplitude[k];
+    const peaks = strongest > 0 ? findPeaks(s, { top: this.options.peaks ?? 3, refine: samples, minAmplitude: 3e-3 * strongest }) : [];
+    const theory = theoryOf(this.options.theory);
+    const nyquist = 0.5 / choice.interval;
+    this.maxFrequency = Math.min(nyquist, this.options.maxFrequency ?? chooseMaxFrequency(peaks, nyquist, theory?.frequency, this.maxFrequency));
+    this.yMax = steadyLimit(largest(s, this.show, lastBin(s, this.maxFrequency)), this.yMax);
+    this.spectrum = s;
+    this.peaks = peaks;
+    this.picture = { spectrum: s, peaks, show: this.show, maxFrequency: this.maxFrequency, yMax: this.yMax, theory, series: this.series };
+    if (peaks.length) this.element.dataset.peak = String(peaks[0].frequency);
+    else delete this.element.dataset.peak;
+    const t0 = record.time(choice.from);
+    this.readout.show(
+      peaks.map((p) => peakLine(p, choice.duration)),
+      basisLine(this.window, t0, choice.duration, choice.samples, choice.stride),
+      theory && peaks.length ? comparison(peaks[0], theory, choice.duration) : undefined,
+      peaks.length ? undefined : 'No peaks: the series does not oscillate over this span.',
+    );
+  }
+
+  private clearResult(message: string): void {
+    this.picture = null;
+    this.spectrum = null;
+    this.peaks = [];
+    this.waiting = message;
+    delete this.element.dataset.peak;
+    this.readout.show([], '', undefined, message);
+  }
+
+  private render(): void {
+    const { frame } = this;
+    frame.clear();
+    const g = frame.context;
+    if (this.picture) {
+      drawSpectrum(g, frame.width, frame.height, this.picture, frame.theme, frame.dpr);
+    } else {
+      const empty = { maxFrequency: this.options.maxFrequency ?? 1, yMax: 1, show: 'magnitude' as const };
+      const { rect, mx, my } = spectrumMappings(frame.width, frame.height, empty);
+      drawAxes(g, rect, mx, my, frame.theme, { xLabel: 'frequency f (cycles per time unit)', yLabel: 'amplitude' }, frame.dpr);
+      g.save();
+      g.fillStyle = frame.theme.muted;
+      g.font = fontOf(frame.theme, 13);
+      g.textAlign = 'center';
+      g.textBaseline = 'middle';
+      g.fillText(this.waiting, rect.left + rect.width / 2, rect.top + rect.height / 2);
+      g.restore();
+    }
+    frame.markReady();
+  }
+}
+
+function theoryOf(option: SpectrumViewOptions['theory']): { frequency: number; label: string } | undefined {
+  if (option === undefined) return undefined;
+  const frequency = typeof option === 'number' ? option : option.frequency;
+  if (!(frequency > 0) || !Number.isFinite(frequency)) return undefined;
+  const label = typeof option === 'number' || option.label === undefined ? `theory ${fixed(frequency, 3)}` : option.label;
+  return { frequency, label };
+}
+
+/** The largest value drawn up to bin `end`: |X|, or |Re|, |Im| too when they are shown. */
+function largest(s: Spectrum, show: SpectrumShow, end: number): number {
+  let m = 0;
+  for (let k = 1; k <= end; k++) {
+    m = Math.max(m, s.amplitude[k]);
+    if (show !== 'magnitude') m = Math.max(m, Math.abs(s.re[k]), Math.abs(s.im[k]));
+  }
+  return m;
+}
+
+function comparison(peak: Peak, theory: { frequency: number; label: string }, duration: number): string {
+  const relative = (peak.frequency - theory.frequency) / theory.frequency;
+  const percent = `${relative >= 0 ? '+' : '−'}${Math.abs(100 * relative).toFixed(2)}%`;
+  return `strongest peak ${fixed(peak.frequency, frequencyDecimals(duration))} vs ${theory.label}: ${percent}`;
+}

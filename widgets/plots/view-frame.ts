@@ -1,0 +1,177 @@
+import { readTheme, sameTheme, type Theme } from './view-theme.ts';
+
+/** An offscreen canvas kept at the frame's size, with its context scaled to CSS pixels. */
+export interface Layer {
+  readonly canvas: HTMLCanvasElement;
+  readonly context: CanvasRenderingContext2D;
+}
+
+export interface FrameOptions {
+  /** the root element's data-widget */
+  kind: string;
+  /** the canvas's accessible name */
+  label: string;
+  /** the canvas height in CSS pixels for a given width */
+  height: (width: number) => number;
+}
+
+/** Width used before the element is laid out (detached, or hidden). */
+const FALLBACK_WIDTH = 640;
+
+/**
+ * The DOM around one canvas plot: a root element carrying data-widget, a
+ * visible canvas sized to the column at the device's pixel ratio, offscreen
+ * layers kept at the same size, and the theme. `onChange` hears of a new
+ * size, pixel ratio or theme, after which every layer is blank and the view
+ * redraws; the view also calls `measure()` each frame, which notices a pixel
+ * ratio change (browser zoom, a window moved to another screen).
+ */
+export class ViewFrame {
+  readonly element: HTMLDivElement;
+  readonly canvas: HTMLCanvasElement;
+  readonly context: CanvasRenderingContext2D;
+  width = FALLBACK_WIDTH;
+  height = 0;
+  dpr = 1;
+  theme: Theme;
+  onChange: (() => void) | null = null;
+  private readonly layers: Layer[] = [];
+  private readonly cleanups: (() => void)[] = [];
+  private note: HTMLDivElement | null = null;
+
+  constructor(private readonly options: FrameOptions) {
+    const element = document.createElement('div');
+    element.dataset.widget = options.kind;
+    element.className = `pb-plot pb-plot-${options.kind}`;
+    element.style.cssText = 'position:relative;width:100%;max-width:100%;box-sizing:border-box;';
+    const canvas = document.createElement('canvas');
+    canvas.setAttribute('role', 'img');
+    canvas.setAttribute('aria-label', options.label);
+    canvas.style.cssText = 'display:block;width:100%;touch-action:pan-y;';
+    element.append(canvas);
+    this.element = element;
+    this.canvas = canvas;
+    this.context = this.contextOf(canvas);
+    this.theme = readTheme(element);
+    this.measure(true);
+    this.observe();
+  }
+
+  /** A new offscreen layer of the frame's size. */
+  layer(): Layer {
+    const canvas = document.createElement('canvas');
+    const layer = { canvas, context: this.contextOf(canvas) };
+    this.layers.push(layer);
+    this.size(layer);
+    return layer;
+  }
+
+  /**
+   * Re-reads width and pixel ratio and resizes every canvas if either
+   * changed (clearing them); returns whether it did.
+   */
+  measure(force = false): boolean {
+    const dpr = Math.max(1, Math.min(4, globalThis.devicePixelRatio || 1));
+    const measured = this.element.clientWidth;
+    const width = Math.max(160, Math.round(measured > 0 ? measured : this.width || FALLBACK_WIDTH));
+    if (!force && width === this.width && dpr === this.dpr) return false;
+    this.width = width;
+    this.dpr = dpr;
+    this.height = Math.round(this.options.height(width));
+    this.canvas.style.height = `${this.height}px`;
+    this.size({ canvas: this.canvas, context: this.context });
+    for (const layer of this.layers) this.size(layer);
+    return true;
+  }
+
+  /** Fills the visible canvas with the background, ready for layers to be composed onto it. */
+  clear(): void {
+    const g = this.context;
+    g.save();
+    g.setTransform(1, 0, 0, 1, 0, 0);
+    g.globalAlpha = 1;
+    g.globalCompositeOperation = 'source-over';
+    g.fillStyle = this.theme.bg;
+    g.fillRect(0, 0, this.canvas.width, this.canvas.height);
+    g.restore();
+  }
+
+  /** Draws a layer onto the visible canvas, pixel for pixel. */
+  compose(layer: Layer): void {
+    const g = this.context;
+    g.save();
+    g.setTransform(1, 0, 0, 1, 0, 0);
+    g.drawImage(layer.canvas, 0, 0);
+    g.restore();
+  }
+
+  /** Shows a one-line message over the plot (a problem, or what it is waiting for); null hides it. */
+  say(text: string | null): void {
+    if (text === null) {
+      this.note?.remove();
+      this.note = null;
+      return;
+    }
+    if (!this.note) {
+      this.note = document.createElement('div');
+      this.note.className = 'pb-plot-note';
+      this.note.setAttribute('role', 'status');
+      this.note.style.cssText =
+        'position:absolute;left:0;right:0;top:40%;text-align:center;padding:0 1em;font:13px/1.4 var(--font-sans,system-ui,sans-serif);color:var(--muted,#6b7280);pointer-events:none;';
+      this.element.append(this.note);
+    }
+    if (this.note.textContent !== text) this.note.textContent = text;
+  }
+
+  markReady(): void {
+    if (!('ready' in this.element.dataset)) this.element.dataset.ready = '';
+  }
+
+  dispose(): void {
+    for (const cleanup of this.cleanups.splice(0)) cleanup();
+    this.onChange = null;
+    this.element.remove();
+  }
+
+  private contextOf(canvas: HTMLCanvasElement): CanvasRenderingContext2D {
+    const context = canvas.getContext('2d');
+    if (!context) throw new Error('this browser cannot draw on a canvas (no 2D context)');
+    return context;
+  }
+
+  private size(layer: Layer): void {
+    layer.canvas.width = Math.round(this.width * this.dpr);
+    layer.canvas.height = Math.round(this.height * this.dpr);
+    layer.context.setTransform(this.dpr, 0, 0, this.dpr, 0, 0);
+    layer.context.lineCap = 'round';
+    layer.context.lineJoin = 'round';
+  }
+
+  private changed(): void {
+    const theme = readTheme(this.element);
+    const themeChanged = !sameTheme(theme, this.theme);
+    this.theme = theme;
+    if (this.measure() || themeChanged) this.onChange?.();
+  }
+
+  private observe(): void {
+    const changed = () => this.changed();
+    if (typeof ResizeObserver === 'function') {
+      const resize = new ResizeObserver(changed);
+      resize.observe(this.element);
+      this.cleanups.push(() => resize.disconnect());
+    }
+    if (typeof MutationObserver === 'function') {
+      const themes = new MutationObserver(changed);
+      const options = { attributes: true, attributeFilter: ['class', 'data-theme', 'style'] };
+      themes.observe(document.documentElement, options);
+      if (document.body) themes.observe(document.body, options);
+      this.cleanups.push(() => themes.disconnect());
+    }
+    if (typeof matchMedia === 'function') {
+      const scheme = matchMedia('(prefers-color-scheme: dark)');
+      scheme.addEventListener('change', changed);
+      this.cleanups.push(() => scheme.removeEventListener('change', changed));
+    }
+  }
+}
