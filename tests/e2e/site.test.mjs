@@ -71,8 +71,12 @@ test('chapters link to previous, next and contents in declared order', async () 
     await page.goto(site.origin + path);
     const nav = page.locator('nav.chapter-nav');
     assert.equal(await nav.locator('a.contents').getAttribute('href'), '/');
-    const previous = await nav.locator('a[rel=prev]').getAttribute('href').catch(() => null);
-    const next = await nav.locator('a[rel=next]').getAttribute('href').catch(() => null);
+    const hrefOf = async (selector) => {
+      const links = nav.locator(selector);
+      return (await links.count()) > 0 ? links.getAttribute('href') : null;
+    };
+    const previous = await hrefOf('a[rel=prev]');
+    const next = await hrefOf('a[rel=next]');
     assert.equal(previous, i > 0 ? paths[i - 1] : null, `previous of ${path}`);
     assert.equal(next, i < paths.length - 1 ? paths[i + 1] : null, `next of ${path}`);
     await page.close();

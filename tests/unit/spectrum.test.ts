@@ -296,3 +296,15 @@ describe('findPeaks(spectrum, options)', () => {
     expect(() => findPeaks(s, { top: -1 })).toThrow('findPeaks: top must be a whole number');
   });
 });
+
+describe('findPeaks(s) and the window’s sidelobes', () => {
+  it('findPeaks(spectrum(tone)) reports the tone and not its Hamming sidelobes', () => {
+    // A single off-bin cosine has one line; anything else found near it is leakage (Harris 1978).
+    const n = 20001;
+    const dt = 0.005;
+    const tone = Float64Array.from({ length: n }, (_, j) => Math.cos(2 * Math.PI * 1.5182 * j * dt));
+    const peaks = findPeaks(spectrum(tone, dt), { top: 5, refine: tone });
+    expect(peaks[0].frequency).toBeCloseTo(1.5182, 2);
+    for (const p of peaks.slice(1)) expect(Math.abs(p.frequency - 1.5182)).toBeGreaterThan(6 / (n * dt));
+  });
+});

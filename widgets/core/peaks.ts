@@ -164,11 +164,28 @@ function refine(y: Float64Array, weightSum: number, s: Spectrum, start: Peak, wi
 }
 
 /**
+ * Whether a refined peak is a line rather than a sidelobe of the window. They
+ * cannot be told apart by level (Hamming's sidelobes reach −43 dB, the
+ * rectangular window's −13 dB), but they can by shape: half a bin from a
+ * line the window's main lobe still holds 0.64 (rectangular) to 0.84
+ * (Hamming) of the peak, while half a bin from a sidelobe's top lie its
+ * nulls (Harris 1978). The bin here is 1/(N·Δ), the unpadded one.
+ */
+function isLine(y: Float64Array, s: Spectrum, peak: Peak): boolean {
+  const theta = 2 * Math.PI * peak.frequency * s.interval;
+  const half = Math.PI / s.samples;
+  const top = dtftPower(y, theta);
+  // Power ratio 0.09 is amplitude 0.3: far below any main lobe, far above a null.
+  return dtftPower(y, theta - half) > 0.09 * top && dtftPower(y, theta + half) > 0.09 * top;
+}
+
+/**
  * The `top` strongest peaks of a spectrum, strongest first. Without `refine`
  * each peak is placed by interpolation between bins; with the original
  * samples, each is then moved to the maximum of the windowed DTFT itself,
  * which takes out the bin grid entirely (the scalloping loss in amplitude and
- * the interpolation bias in frequency).
+ * the interpolation bias in frequency), and the window's sidelobes are
+ * recognised by their shape and skipped.
  */
 export function findPeaks(s: Spectrum, options: PeakOptions = {}): Peak[] {
   const top = options.top ?? 5;
@@ -178,8 +195,10 @@ export function findPeaks(s: Spectrum, options: PeakOptions = {}): Peak[] {
     throw new Error(`findPeaks: evaluations must be a whole number ≥ 1, got ${String(evaluations)}`);
   }
   const floor = options.minAmplitude ?? 0;
-  const peaks = strongestMaxima(s.amplitude, top, floor).map((k) => interpolate(s, k));
   const samples = options.refine;
+  // With the samples at hand, sidelobes can be recognised and skipped, so look past them.
+  const candidates = samples === undefined ? top : 2 * top + 6;
+  const peaks = strongestMaxima(s.amplitude, candidates, floor).map((k) => interpolate(s, k));
   if (samples === undefined || peaks.length === 0) return peaks;
 
   if (samples.length !== s.samples) {
@@ -188,6 +207,10 @@ export function findPeaks(s: Spectrum, options: PeakOptions = {}): Peak[] {
   const window = checkWindowName(options.window ?? s.window);
   const y = new Float64Array(samples.length);
   const weightSum = windowedDeviation(samples, window, y);
-  const refined = peaks.map((p) => refine(y, weightSum, s, p, window, evaluations));
-  return refined.sort((p, q) => q.amplitude - p.amplitude);
+  const lines: Peak[] = [];
+  for (const p of peaks) {
+    const r = refine(y, weightSum, s, p, window, evaluations);
+    if (isLine(y, s, r) && !lines.some((l) => Math.abs(l.frequency - r.frequency) < 0.5 * s.binWidth)) lines.push(r);
+  }
+  return lines.sort((p, q) => q.amplitude - p.amplitude).slice(0, top);
 }

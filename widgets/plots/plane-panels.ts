@@ -1,6 +1,6 @@
 import { makeMapping, type Mapping } from './axis-scale.ts';
 import { MARGIN, type Rect } from './draw-axes.ts';
-import { contains, emptyExtent, fitEqualAspect, growExtent, isEmpty, type AxisKind, type Extent } from './extent.ts';
+import { contains, emptyExtent, fitEqualAspect, growExtent, includePoint, isEmpty, type AxisKind, type Extent } from './extent.ts';
 import { makePens, type Pens } from './trace.ts';
 
 /** One line on a plane plot: the record columns of its x and y, and its colour group. */
@@ -40,7 +40,9 @@ export interface Panel {
   readonly groups: readonly number[];
   readonly starts: readonly number[];
   readonly pens: Pens;
-  /** the data extent fitted so far (auto) or the fixed one */
+  /** every sample seen so far, unpadded (auto extents grow from this, so padding does not compound) */
+  readonly data: Extent;
+  /** the padded data extent (auto) or the fixed one */
   fitted: Extent;
   /** what is shown: `fitted` after the equal-aspect fit */
   shown: Extent;
@@ -74,6 +76,7 @@ export function makePanel(spec: PanelSpec): Panel {
     groups,
     starts,
     pens: makePens(ordered.length),
+    data: emptyExtent(),
     fitted: spec.extent ? { ...spec.extent } : emptyExtent(),
     shown: { x0: 0, x1: 1, y0: 0, y1: 1 },
     rect,
@@ -113,16 +116,18 @@ function clampTo(e: Extent, limit: Extent): void {
 }
 
 /**
- * Grows an auto panel's fitted extent when `panel.fresh` (the new samples'
- * extent) is not all shown; returns whether it grew, in which case the
- * panel must be placed again and redrawn.
+ * Adds `panel.fresh` (the new samples' extent) to the panel's data extent and
+ * regrows an auto extent when the new samples are not all shown; returns
+ * whether it grew, in which case the panel must be placed again and redrawn.
  */
 export function growPanel(panel: Panel): boolean {
-  const { spec, fresh } = panel;
+  const { spec, fresh, data } = panel;
   if (spec.extent || isEmpty(fresh)) return false;
   if (spec.limit) clampTo(fresh, spec.limit);
+  includePoint(data, fresh.x0, fresh.y0);
+  includePoint(data, fresh.x1, fresh.y1);
   if (!isEmpty(panel.fitted) && contains(panel.shown, fresh)) return false;
-  panel.fitted = growExtent(panel.fitted, fresh, HEADROOM, spec.xKind, spec.yKind, spec.constant);
+  panel.fitted = growExtent(data, data, HEADROOM, spec.xKind, spec.yKind, spec.constant);
   if (spec.limit) clampTo(panel.fitted, spec.limit);
   return true;
 }

@@ -1,4 +1,5 @@
 import type { Peak } from '../core/peaks.ts';
+import type { Spectrum } from '../core/spectrum.ts';
 
 /** The smallest of 1, 2, 2.5, 5 × 10^k that is ≥ v. */
 export function niceCeil(v: number): number {
@@ -40,4 +41,15 @@ export function steadyLimit(value: number, current: number | undefined): number 
   const wanted = value > 0 && Number.isFinite(value) ? value * 1.12 : 1;
   if (current === undefined || wanted > current || wanted < 0.5 * current) return niceCeil(wanted);
   return current;
+}
+
+/** Bins wanted on the visible frequency axis, and the largest padded FFT made to get them. */
+const SMOOTH_BINS = 320;
+const MAX_PADDED = 1 << 18;
+
+/** The zero-padding factor (a power of two) that puts about SMOOTH_BINS bins below maxFrequency. */
+export function padFor(s: Pick<Spectrum, 'binWidth' | 'padded'>, maxFrequency: number): number {
+  let pad = 1;
+  while (maxFrequency / (s.binWidth / pad) < SMOOTH_BINS && s.padded * pad * 2 <= MAX_PADDED) pad *= 2;
+  return pad;
 }

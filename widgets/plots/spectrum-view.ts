@@ -2,12 +2,13 @@ import { findPeaks, spectrum, type Peak, type Spectrum, type WindowName } from '
 import type { Simulation } from '../core/simulation.ts';
 import type { View } from '../simulator/view.ts';
 import { drawAxes, fontOf } from './draw-axes.ts';
+import { dropLeakage } from './peak-filter.ts';
 import { basisLine, fixed, frequencyDecimals, peakLine } from './peak-readout.ts';
 import { columnsOf } from './plane-columns.ts';
 import { controlRow, selectControl, seriesChoices, type SelectControl } from './spectrum-controls.ts';
 import { drawSpectrum, lastBin, spectrumMappings, type SpectrumPicture, type SpectrumShow } from './spectrum-plot.ts';
 import { chooseRows, gatherSamples, MIN_SAMPLES, type RowChoice, type SpanOption } from './spectrum-rows.ts';
-import { chooseMaxFrequency, steadyLimit } from './spectrum-scale.ts';
+import { chooseMaxFrequency, padFor, steadyLimit } from './spectrum-scale.ts';
 import { SpectrumReadout } from './spectrum-readout.ts';
 import { ViewFrame } from './view-frame.ts';
 
@@ -169,14 +170,19 @@ class SpectrumViewImpl implements SpectrumView {
     const s = spectrum(samples, choice.interval, { window: this.window });
     let strongest = 0;
     for (let k = 1; k < s.amplitude.length; k++) if (s.amplitude[k] > strongest) strongest = s.amplitude[k];
-    const peaks = strongest > 0 ? findPeaks(s, { top: this.options.peaks ?? 3, refine: samples, minAmplitude: 3e-3 * strongest }) : [];
+    const wanted = this.options.peaks ?? 3;
+    const found = strongest > 0 && wanted > 0 ? findPeaks(s, { top: wanted + 4, refine: samples, minAmplitude: 2e-3 * strongest }) : [];
+    const peaks = dropLeakage(found, choice.duration, this.window).slice(0, wanted);
     const theory = theoryOf(this.options.theory);
     const nyquist = 0.5 / choice.interval;
     this.maxFrequency = Math.min(nyquist, this.options.maxFrequency ?? chooseMaxFrequency(peaks, nyquist, theory?.frequency, this.maxFrequency));
-    this.yMax = steadyLimit(largest(s, this.show, lastBin(s, this.maxFrequency)), this.yMax);
+    // Zero-padding samples the same windowed DTFT more finely: a smooth curve where few bins fall on the axis.
+    const pad = padFor(s, this.maxFrequency);
+    const shown = pad > 1 ? spectrum(samples, choice.interval, { window: this.window, pad }) : s;
+    this.yMax = steadyLimit(largest(shown, this.show, lastBin(shown, this.maxFrequency)), this.yMax);
     this.spectrum = s;
     this.peaks = peaks;
-    this.picture = { spectrum: s, peaks, show: this.show, maxFrequency: this.maxFrequency, yMax: this.yMax, theory, series: this.series };
+    this.picture = { spectrum: shown, peaks, show: this.show, maxFrequency: this.maxFrequency, yMax: this.yMax, theory, series: this.series };
     if (peaks.length) this.element.dataset.peak = String(peaks[0].frequency);
     else delete this.element.dataset.peak;
     const t0 = record.time(choice.from);

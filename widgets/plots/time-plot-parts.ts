@@ -1,4 +1,5 @@
 import { scaleLinear } from 'd3-scale';
+import { h as el } from '../controls/dom.ts';
 import { drawXAxis, drawYAxis, MARGIN, type Box } from './axes.ts';
 import type { Context } from './canvas.ts';
 import type { Theme } from './colors.ts';
@@ -8,19 +9,7 @@ import { yScale, type Domain, type YScaleKind } from './y-map.ts';
 /** The time windows offered, in time units across the plot. */
 export const WINDOWS = [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000];
 
-/** A small DOM helper: an element with a class, attributes and children. */
-export function el<K extends keyof HTMLElementTagNameMap>(
-  tag: K,
-  className: string,
-  attributes: Record<string, string> = {},
-  ...children: (Node | string)[]
-): HTMLElementTagNameMap[K] {
-  const e = document.createElement(tag);
-  if (className) e.className = className;
-  for (const [k, v] of Object.entries(attributes)) e.setAttribute(k, v);
-  e.append(...children);
-  return e;
-}
+export { el };
 
 /** The plot area inside a stage of `width × height` CSS pixels. */
 export function plotBox(width: number, height: number): Box {

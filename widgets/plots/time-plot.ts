@@ -84,7 +84,7 @@ export class TimePlot implements View {
     this.data = el('canvas', 'pb-data', { 'aria-hidden': 'true' });
     this.data.style.left = `${MARGIN.left}px`;
     this.data.style.top = `${MARGIN.top}px`;
-    this.stage = el('div', 'pb-stage', { tabindex: '0', role: 'img', 'aria-label': `${label}: drag, or use the arrow keys, to scroll back in time` }, this.frame, this.data);
+    this.stage = el('div', 'pb-stage', { tabindex: '0', role: 'group', 'aria-roledescription': 'plot', 'aria-label': `${label}: drag, or use the arrow keys, to scroll back in time` }, this.frame, this.data);
     this.stage.style.height = `${this.cssHeight}px`;
     this.legendSlot = el('div', 'pb-legend-slot');
     this.logButton = el('button', 'pb-button pb-small', { type: 'button', 'aria-pressed': String(kind === 'symlog'), title: 'Symmetric log scale: 20 ln(1 + |y|) sgn y' }, 'log y');

@@ -16,6 +16,8 @@ export interface View {
   reset(simulation: Simulation): void;
   /** canvases a PNG download may offer, with a name for each */
   canvases?(): { name: string; canvas: HTMLCanvasElement }[];
+  /** the driver started or stopped integrating (a plot may, say, let the wheel scroll it back while paused) */
+  setPlaying?(playing: boolean): void;
   dispose(): void;
 }
 

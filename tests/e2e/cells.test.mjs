@@ -1,0 +1,115 @@
+/**
+ * Live cells on /introduction/: reactivity, generators, and errors that stay
+ * under the cell that caused them while the rest of the page keeps running.
+ */
+import assert from 'node:assert/strict';
+import { after, before, test } from 'node:test';
+import { cell, errorOf, openChapter, openSite, outputOf, typeIntoCell, waitForOutput } from './fixture.mjs';
+
+/** @type {Awaited<ReturnType<typeof openSite>>} */
+let site;
+before(async () => (site = await openSite()));
+after(() => site?.close());
+
+const PERIOD_OF = (omega) => `period = ${(2 * Math.PI) / omega}`;
+
+test('cells show their first values: numbers inspected, html as DOM', async () => {
+  const { page, problems } = await openChapter(site, '/introduction/');
+  assert.equal(await outputOf(page, 'omega'), 'omega = 10');
+  assert.equal(await outputOf(page, 'period'), PERIOD_OF(10));
+  assert.equal(await cell(page, 'cell-3').locator('[data-cell-output] > p strong').textContent(), '0.628');
+  assert.equal(await cell(page, 'cell-5').locator('[data-cell-output] > svg circle').count(), 2);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('generator cells animate', async () => {
+  const { page, problems } = await openChapter(site, '/introduction/');
+  const first = await outputOf(page, 'phase');
+  assert.match(first, /^phase = \{t: /);
+  await waitForOutput(page, 'phase', (text) => text !== first);
+  const dot = cell(page, 'cell-5').locator('svg circle').nth(1);
+  const x0 = await dot.getAttribute('cx');
+  await page.waitForFunction(
+    (before) => document.querySelector('[data-cell="cell-5"] svg circle:nth-of-type(2)')?.getAttribute('cx') !== before,
+    x0,
+  );
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('editing a cell re-runs the cells that use it (Shift+Enter and Run)', async () => {
+  const { page, problems } = await openChapter(site, '/introduction/');
+  await typeIntoCell(page, 'omega', 'omega = 5', { run: 'keys' });
+  await waitForOutput(page, 'period', (text) => text === PERIOD_OF(5));
+  assert.equal(await outputOf(page, 'omega'), 'omega = 5');
+  assert.equal(await cell(page, 'cell-3').locator('strong').textContent(), '1.257');
+
+  await typeIntoCell(page, 'omega', 'omega = 2 * 10', { run: 'button' });
+  await waitForOutput(page, 'period', (text) => text === PERIOD_OF(20));
+  assert.equal(await cell(page, 'cell-3').locator('strong').textContent(), '0.314');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a syntax error shows under its cell with line:column; the old definition and other cells keep running', async () => {
+  const { page, problems } = await openChapter(site, '/introduction/');
+  await typeIntoCell(page, 'omega', 'omega = = 3');
+  await page.waitForFunction(() => document.querySelector('[data-cell="omega"] [data-cell-error]')?.textContent?.includes('SyntaxError'));
+  assert.equal(await errorOf(page, 'omega'), 'SyntaxError: Unexpected token (1:8)');
+  // The editor keeps the reader's text; the old definition keeps its value.
+  assert.equal(await cell(page, 'omega').locator('.cm-content').textContent(), 'omega = = 3');
+  assert.equal(await outputOf(page, 'omega'), 'omega = 10');
+  assert.equal(await outputOf(page, 'period'), PERIOD_OF(10));
+  assert.equal(await errorOf(page, 'period'), '');
+  const phase = await outputOf(page, 'phase');
+  await waitForOutput(page, 'phase', (text) => text !== phase);
+
+  // A multi-line block reports the line the error is on.
+  await typeIntoCell(page, 'period', 'period = {\n  const x = 1;\n  return x +;\n}');
+  await page.waitForFunction(() => document.querySelector('[data-cell="period"] [data-cell-error]')?.textContent?.includes('SyntaxError'));
+  assert.match(await errorOf(page, 'period'), /^SyntaxError: Unexpected token \(3:\d+\)$/);
+
+  // Fixing the text clears the error.
+  await typeIntoCell(page, 'omega', 'omega = 4');
+  await waitForOutput(page, 'omega', (text) => text === 'omega = 4');
+  assert.equal(await errorOf(page, 'omega'), '');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a name that exists on window but not in the book is "not defined"', async () => {
+  const { page, problems } = await openChapter(site, '/introduction/');
+  await typeIntoCell(page, 'omega', 'omega = status');
+  await page.waitForFunction(() => document.querySelector('[data-cell="omega"] [data-cell-error]')?.textContent?.includes('not defined'));
+  assert.equal(await errorOf(page, 'omega'), 'RuntimeError: status is not defined');
+  // Dependents say which input failed; unrelated cells keep running.
+  await page.waitForFunction(() => document.querySelector('[data-cell="period"] [data-cell-error]')?.textContent?.includes('omega'));
+  assert.equal(await errorOf(page, 'period'), 'RuntimeError: input omega failed: status is not defined');
+  assert.equal(await outputOf(page, 'period'), '');
+
+  await typeIntoCell(page, 'omega', 'omega = name');
+  await page.waitForFunction(() => document.querySelector('[data-cell="omega"] [data-cell-error]')?.textContent?.includes('name is not defined'));
+
+  // Builtins do resolve: Math by bare name, html, width.
+  await typeIntoCell(page, 'omega', 'omega = hypot(3, 4) + width * 0');
+  await waitForOutput(page, 'omega', (text) => text === 'omega = 5');
+  await waitForOutput(page, 'period', (text) => text === PERIOD_OF(5));
+  assert.equal(await errorOf(page, 'period'), '');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a runtime error stays under its cell; promises are awaited', async () => {
+  const { page, problems } = await openChapter(site, '/introduction/');
+  await typeIntoCell(page, 'omega', 'omega = { throw new TypeError("no frequency") }');
+  await page.waitForFunction(() => document.querySelector('[data-cell="omega"] [data-cell-error]')?.textContent?.includes('TypeError'));
+  assert.equal(await errorOf(page, 'omega'), 'TypeError: no frequency');
+  assert.match(await errorOf(page, 'period'), /input omega failed: no frequency/);
+
+  await typeIntoCell(page, 'omega', 'omega = new Promise((resolve) => setTimeout(() => resolve(8), 50))');
+  await waitForOutput(page, 'period', (text) => text === PERIOD_OF(8));
+  assert.equal(await errorOf(page, 'omega'), '');
+  assert.deepEqual(problems, []);
+  await page.close();
+});

@@ -1,0 +1,27 @@
+import type { Peak } from '../core/peaks.ts';
+import type { WindowName } from '../core/window.ts';
+
+/**
+ * Highest sidelobe of each window relative to its main lobe: the exact
+ * Hamming window's sidelobes stay below −42.5 dB (0.0075) everywhere; the
+ * rectangular window's fall off as 1/(π·m) at m resolution bins away.
+ */
+function sidelobe(window: WindowName, bins: number): number {
+  if (window === 'hamming') return 0.0085;
+  return Math.min(0.25, 1.25 / (Math.PI * Math.max(1, bins)));
+}
+
+/**
+ * Drops peaks that are no more than a sidelobe of a stronger peak: local
+ * maxima of leakage rather than motion. `peaks` must be strongest first, as
+ * findPeaks returns them; `duration` is the time the spectrum covers, so
+ * that 1/duration is one resolution bin.
+ */
+export function dropLeakage(peaks: readonly Peak[], duration: number, window: WindowName): Peak[] {
+  const kept: Peak[] = [];
+  for (const p of peaks) {
+    const leak = kept.some((s) => p.amplitude < s.amplitude * sidelobe(window, Math.abs(p.frequency - s.frequency) * duration));
+    if (!leak) kept.push(p);
+  }
+  return kept;
+}

@@ -1,0 +1,251 @@
+import type { Simulation } from '../core/simulation.ts';
+import { carryOver, DEFAULT_BUDGET, integrateFrame, owedSteps, type Budget } from './frame-budget.ts';
+import type { View } from './view.ts';
+
+/** Measurements of the last frames, for readouts and tests. */
+export interface FrameStats {
+  /** integration time of the last frame, ms */
+  integrateMs: number;
+  /** drawing time of the last frame (all views), ms */
+  drawMs: number;
+  /** steps integrated in the last frame */
+  steps: number;
+  /** smoothed steps per real second actually achieved while playing */
+  stepsPerSecond: number;
+  /** smoothed achieved / requested rate; below 1 when the model cannot keep up with real time */
+  pace: number;
+  frames: number;
+}
+
+export interface DriverEvents {
+  /** after each drawn frame */
+  frame: FrameStats;
+  /** play, pause or a blow-up */
+  state: { playing: boolean; error: Error | null };
+  /** restart, or a new simulation (new dt) */
+  reset: Simulation;
+  dispose: undefined;
+}
+
+export interface DriverOptions {
+  /** simulated time per real second (default 1: 2000 steps/s at dt = 5e-4) */
+  speed?: number;
+  budget?: Budget;
+  /** when given, computing stops while it is detached from the page */
+  element?: HTMLElement;
+  /** how long the element may stay detached before the driver disposes itself (default 60 s) */
+  detachedLimitMs?: number;
+}
+
+const clock = (): number => performance.now();
+
+/**
+ * Runs a simulation in real time on requestAnimationFrame: each frame
+ * integrates the steps real time asks for within a time budget (see
+ * frame-budget.ts), then asks every view to draw what is new. It computes
+ * nothing while paused, while the tab is hidden, or while its element is
+ * off the page, and pauses with the error on a blow-up.
+ */
+export class Driver {
+  playing = false;
+  speed: number;
+  readonly stats: FrameStats = { integrateMs: 0, drawMs: 0, steps: 0, stepsPerSecond: 0, pace: 1, frames: 0 };
+  private raf = 0;
+  private last = NaN;
+  private carry = 0;
+  private cost = NaN;
+  private disposed = false;
+  private wasConnected = false;
+  private readonly budget: Budget;
+  private readonly listeners = new Map<keyof DriverEvents, Set<(value: never) => void>>();
+  private readonly onVisibility = (): void => this.visibilityChanged();
+
+  constructor(
+    public simulation: Simulation,
+    readonly views: readonly View[],
+    private readonly options: DriverOptions = {},
+  ) {
+    this.speed = checkSpeed(options.speed ?? 1);
+    this.budget = options.budget ?? DEFAULT_BUDGET;
+    document.addEventListener('visibilitychange', this.onVisibility);
+  }
+
+  /** Subscribes to an event; returns the unsubscribe. */
+  on<K extends keyof DriverEvents>(type: K, listener: (value: DriverEvents[K]) => void): () => void {
+    if (!this.listeners.has(type)) this.listeners.set(type, new Set());
+    const set = this.listeners.get(type)!;
+    set.add(listener as (value: never) => void);
+    return () => set.delete(listener as (value: never) => void);
+  }
+
+  private emit<K extends keyof DriverEvents>(type: K, value: DriverEvents[K]): void {
+    for (const listener of this.listeners.get(type) ?? []) (listener as (v: DriverEvents[K]) => void)(value);
+  }
+
+  get error(): Error | null {
+    return this.simulation.error;
+  }
+
+  play(): void {
+    if (this.disposed || this.playing || this.simulation.error) return;
+    this.playing = true;
+    this.last = NaN;
+    this.carry = 0;
+    this.views.forEach((v) => v.setPlaying?.(true));
+    this.emit('state', { playing: true, error: null });
+    this.schedule();
+  }
+
+  pause(): void {
+    if (!this.playing) return;
+    this.playing = false;
+    this.views.forEach((v) => v.setPlaying?.(false));
+    this.emit('state', { playing: false, error: this.simulation.error });
+  }
+
+  toggle(): void {
+    if (this.playing) this.pause();
+    else this.play();
+  }
+
+  /** Pauses and advances by one sample (every · dt). */
+  step(): void {
+    this.pause();
+    if (this.disposed || this.simulation.error) return;
+    this.simulation.run(this.simulation.every);
+    this.drawNow();
+  }
+
+  /** Back to the initial state; keeps playing if it was. */
+  restart(): void {
+    this.simulation.restart();
+    this.afterReset();
+  }
+
+  /** Swaps in a new simulation (a new dt) and resets the views. */
+  replace(simulation: Simulation): void {
+    this.simulation = simulation;
+    this.afterReset();
+  }
+
+  setSpeed(speed: number): void {
+    this.speed = checkSpeed(speed);
+    this.carry = 0;
+  }
+
+  /** Requested steps per real second at the current speed. */
+  get targetRate(): number {
+    return this.speed / this.simulation.dt;
+  }
+
+  /** Draws at the next frame even when paused (after a resize, or at start). */
+  requestDraw(): void {
+    this.schedule();
+  }
+
+  dispose(): void {
+    if (this.disposed) return;
+    this.disposed = true;
+    this.playing = false;
+    if (this.raf) cancelAnimationFrame(this.raf);
+    document.removeEventListener('visibilitychange', this.onVisibility);
+    this.views.forEach((v) => v.dispose());
+    this.emit('dispose', undefined);
+    this.listeners.clear();
+  }
+
+  private afterReset(): void {
+    this.carry = 0;
+    this.last = NaN;
+    this.views.forEach((v) => v.reset(this.simulation));
+    this.emit('reset', this.simulation);
+    this.emit('state', { playing: this.playing, error: null });
+    this.drawNow();
+    if (this.playing) this.schedule();
+  }
+
+  private schedule(): void {
+    if (this.disposed || this.raf || document.visibilityState === 'hidden') return;
+    this.raf = requestAnimationFrame((now) => this.frame(now));
+  }
+
+  private visibilityChanged(): void {
+    if (document.visibilityState === 'hidden') {
+      if (this.raf) cancelAnimationFrame(this.raf);
+      this.raf = 0;
+    } else if (this.playing) {
+      this.last = NaN;
+      this.schedule();
+    }
+  }
+
+  /** True while the element (if any) is on the page, or has not been put there yet. */
+  private attached(): boolean {
+    const element = this.options.element;
+    if (!element) return true;
+    if (element.isConnected) this.wasConnected = true;
+    return element.isConnected || !this.wasConnected;
+  }
+
+  private frame(now: number): void {
+    this.raf = 0;
+    if (this.disposed) return;
+    const elapsed = Number.isNaN(this.last) ? 1000 / 60 : now - this.last;
+    this.last = now;
+    let steps = 0;
+    let integrateMs = 0;
+    if (this.playing && this.attached()) {
+      const sim = this.simulation;
+      const owed = owedSteps(this.carry, elapsed, this.speed, sim.dt, this.budget);
+      const work = integrateFrame((n) => sim.run(n), owed, this.cost, clock, this.budget);
+      this.cost = work.costMs;
+      this.carry = carryOver(owed, work.steps, work.outOfBudget);
+      steps = work.steps;
+      integrateMs = work.ms;
+      const rate = (steps * 1000) / Math.max(1, Math.min(elapsed, this.budget.maxElapsedMs));
+      const s = this.stats;
+      s.stepsPerSecond = s.frames === 0 ? rate : 0.9 * s.stepsPerSecond + 0.1 * rate;
+      s.pace = Math.min(1, s.stepsPerSecond / this.targetRate);
+    }
+    this.drawNow(steps, integrateMs);
+    if (this.simulation.error) this.pause();
+    if (this.playing) {
+      if (this.attached()) this.schedule();
+      else this.waitForAttach();
+    }
+  }
+
+  private drawNow(steps = 0, integrateMs = 0): void {
+    const start = clock();
+    for (const view of this.views) view.draw(this.simulation);
+    const s = this.stats;
+    s.drawMs = clock() - start;
+    s.integrateMs = integrateMs;
+    s.steps = steps;
+    s.frames++;
+    this.emit('frame', s);
+  }
+
+  /**
+   * While detached, checks once a second whether the element came back; after
+   * `detachedLimitMs` off the page it gives up and disposes, releasing the record.
+   */
+  private waitForAttach(): void {
+    const since = clock();
+    const limit = this.options.detachedLimitMs ?? 60_000;
+    const poll = (): void => {
+      if (this.disposed || !this.playing) return;
+      if (this.attached()) {
+        this.last = NaN;
+        this.schedule();
+      } else if (clock() - since > limit) this.dispose();
+      else setTimeout(poll, 1000);
+    };
+    setTimeout(poll, 1000);
+  }
+}
+
+function checkSpeed(speed: number): number {
+  if (!(speed > 0) || !Number.isFinite(speed)) throw new Error(`speed must be a positive number of time units per second, not ${speed}`);
+  return speed;
+}
