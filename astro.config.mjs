@@ -9,6 +9,11 @@ import { remarkCells, CELL_CODE_LANGUAGE } from './src/lib/remark-cells.mjs';
  * Names the lazily loaded chunks so the first page load can be checked for
  * their absence (tests/e2e/lazy.test.mjs): CodeMirror and its Lezer parsers
  * go to `editor`, the Observable parser and acorn go to `parser`.
+ *
+ * Only modules with no dependency shared with the page's boot code may be
+ * listed: Rollup pulls a manual chunk's unassigned dependencies into it, so
+ * listing widgets/cells/parse.ts would drag spec.ts (used at boot) into
+ * `parser` and make every page load it.
  * @param {string} id
  * @returns {string | undefined}
  */
@@ -16,7 +21,6 @@ function lazyChunk(id) {
   if (/[\\/]node_modules[\\/](@codemirror|@lezer|style-mod|w3c-keyname|crelt)[\\/]/.test(id)) return 'editor';
   if (/[\\/]widgets[\\/]cells[\\/]editor\.ts$/.test(id)) return 'editor';
   if (/[\\/]node_modules[\\/](@observablehq[\\/]parser|acorn|acorn-walk)[\\/]/.test(id)) return 'parser';
-  if (/[\\/]widgets[\\/]cells[\\/]parse\.ts$/.test(id)) return 'parser';
   return undefined;
 }
 

@@ -4,10 +4,12 @@
  * It uses the same Lezer grammar and the same `tok-*` class names as the
  * lazily loaded CodeMirror editor (widgets/cells/editor.ts), so nothing
  * changes colour when the static code is swapped for the editor, and the
- * no-JavaScript reader still gets highlighted code.
+ * no-JavaScript reader still gets highlighted code. Like the editor, it reads
+ * `name = { … }` as a block (widgets/cells/block-syntax.ts).
  */
 import { classHighlighter, highlightCode } from '@lezer/highlight';
 import { parser } from '@lezer/javascript';
+import { asParsableBlock } from '../../widgets/cells/block-syntax.ts';
 
 /**
  * @param {string} source
@@ -18,7 +20,7 @@ export function highlightJs(source) {
   const nodes = [];
   highlightCode(
     source,
-    parser.parse(source),
+    parser.parse(asParsableBlock(source)),
     classHighlighter,
     (text, classes) => {
       const value = { type: 'text', value: text };

@@ -102,7 +102,7 @@ export function renderCell(source, id, analysis) {
     ]),
     h('div', { className: ['cell-notice'], dataCellNotice: '', hidden: true }),
     h('div', { className: ['cell-error'], dataCellError: '', ariaLive: 'polite', hidden: true }),
-    h('div', { className: ['cell-output'], dataCellOutput: '', ariaLive: 'polite' }),
+    h('div', { className: ['cell-output'], dataCellOutput: '' }),
     h('noscript', {}, [
       h('p', { className: ['cell-noscript'] }, [text('This is a live code cell: turn on JavaScript to run and edit it.')]),
     ]),

@@ -113,3 +113,27 @@ test('a runtime error stays under its cell; promises are awaited', async () => {
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('builtins: now ticks, width follows the text column, invalidation resolves on redefinition', async () => {
+  const { page, problems } = await openChapter(site, '/introduction/');
+  await typeIntoCell(page, 'omega', 'omega = Math.round(now)');
+  const first = await waitForOutput(page, 'omega', (text) => /^omega = \d+$/.test(text));
+  await waitForOutput(page, 'omega', (text) => text !== first);
+
+  const column = await page.locator('[data-chapter]').evaluate((node) => Math.floor(node.getBoundingClientRect().width));
+  await typeIntoCell(page, 'omega', 'omega = width');
+  await waitForOutput(page, 'omega', (text) => text === `omega = ${column}`);
+  await page.setViewportSize({ width: 500, height: 900 });
+  const narrow = await page.locator('[data-chapter]').evaluate((node) => Math.floor(node.getBoundingClientRect().width));
+  assert.ok(narrow < column);
+  await waitForOutput(page, 'omega', (text) => text === `omega = ${narrow}`);
+  await page.setViewportSize({ width: 1100, height: 900 });
+
+  await typeIntoCell(page, 'omega', 'omega = { invalidation.then(() => (document.body.dataset.invalidated = "yes")); return 10; }');
+  await waitForOutput(page, 'omega', (text) => text === 'omega = 10');
+  assert.equal(await page.evaluate(() => document.body.dataset.invalidated), undefined);
+  await typeIntoCell(page, 'omega', 'omega = 11');
+  await page.waitForFunction(() => document.body.dataset.invalidated === 'yes');
+  assert.deepEqual(problems, []);
+  await page.close();
+});

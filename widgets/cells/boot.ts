@@ -17,7 +17,7 @@ import { CellView } from './view.ts';
 function markReady(cells: readonly LiveCell[]): void {
   document.body.dataset.cellsReady = '';
   document.dispatchEvent(new CustomEvent('phasebook:cells-ready'));
-  scheduleIdle(cells.map((cell) => () => cell.mountEditor()));
+  scheduleIdle(cells.map((cell) => () => cell.mountWhenIdle()));
 }
 
 function boot(): void {
@@ -33,8 +33,16 @@ function boot(): void {
     waiting -= 1;
     if (waiting === 0) markReady(cells);
   };
-  for (const element of elements) cells.push(new LiveCell(new CellView(element), notebook, store, onFirstResult));
-  if (cells.length === 0) markReady(cells);
+  for (const element of elements) {
+    try {
+      cells.push(new LiveCell(new CellView(element), notebook, store, onFirstResult));
+    } catch (error) {
+      // Markup the build did not produce (hand-edited HTML?): skip this cell, keep the others.
+      console.error(error);
+      onFirstResult();
+    }
+  }
+  if (elements.length === 0) markReady(cells);
   for (const cell of cells) void cell.start();
 }
 

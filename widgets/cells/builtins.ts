@@ -7,7 +7,8 @@
  * explicitly and makes every other name an error (see runtime.ts).
  *
  * To add widgets, edit widgets/library.ts, not this file: its `library`
- * object is spread over these builtins.
+ * object is spread over these builtins. An entry wrapped in `lazy(…)`
+ * (lazy-builtin.ts) loads only when a cell first names it.
  *
  * `invalidation` needs no entry: the runtime gives each cell a promise that
  * resolves when the cell is redefined or the page disposes it, for stopping
@@ -15,6 +16,7 @@
  */
 import { library } from '../library.ts';
 import { html } from './html.ts';
+import { builtinDefinition } from './lazy-builtin.ts';
 import { observeNow, observeWidth } from './observe.ts';
 
 /** How the runtime wants a builtin: a function it calls for the value. */
@@ -69,7 +71,7 @@ export function builtinValues(): Record<string, unknown> {
  */
 export function createBuiltins(root: Element): Record<string, BuiltinDefinition> {
   const definitions: Record<string, BuiltinDefinition> = {};
-  for (const [name, value] of Object.entries(builtinValues())) definitions[name] = () => value;
+  for (const [name, value] of Object.entries(builtinValues())) definitions[name] = builtinDefinition(value);
   definitions.width = () => observeWidth(root);
   definitions.now = () => observeNow();
   return definitions;

@@ -1,16 +1,16 @@
 /**
- * One live cell: ties its view, its runtime variable, the reader's saved edit
- * and (once loaded) its editor together.
+ * One live cell: ties its view, its runtime variable, the reader's saved
+ * edit (drafts.ts) and, once loaded, its editor together.
  *
- * Invariants the reader can rely on:
- * - the text they typed is never thrown away by the page: a syntax error keeps
- *   the old definition running and the text in the editor, and drafts are
- *   saved as they type;
- * - a saved edit made from an older version of the chapter's cell is offered,
+ * Promises to the reader:
+ * - the page never throws their text away: a syntax error keeps the old
+ *   definition running and the text in the editor, and drafts are saved as
+ *   they type;
+ * - an edit made from an older version of the chapter's cell is offered,
  *   never applied silently.
  */
-import { RuntimeError } from '@observablehq/runtime';
 import { compileCell } from './compile.ts';
+import { DraftKeeper } from './drafts.ts';
 import type { CellEditor } from './editor.ts';
 import { loadEditor, loadParser } from './lazy.ts';
 import type { CellVariable, Notebook } from './runtime.ts';
@@ -18,13 +18,10 @@ import { formatError, type CellSpec } from './spec.ts';
 import type { EditStore, SavedEdit } from './storage.ts';
 import type { CellView } from './view.ts';
 
-/** Drafts are saved this long after the last keystroke. */
-const SAVE_DELAY_MS = 400;
-
 export class LiveCell {
   readonly #view: CellView;
   readonly #notebook: Notebook;
-  readonly #store: EditStore;
+  readonly #drafts: DraftKeeper;
   readonly #variable: CellVariable;
   readonly #onFirstResult: () => void;
   #hasResult = false;
@@ -32,14 +29,11 @@ export class LiveCell {
   #draft: string;
   #editor: CellEditor | null = null;
   #editorLoading: Promise<void> | null = null;
-  /** A saved edit from an older version of this cell, while it is on offer. */
-  #offer: SavedEdit | null = null;
-  #saveTimer: ReturnType<typeof setTimeout> | undefined;
 
   constructor(view: CellView, notebook: Notebook, store: EditStore, onFirstResult: () => void) {
     this.#view = view;
     this.#notebook = notebook;
-    this.#store = store;
+    this.#drafts = new DraftKeeper(store, view.id, view.originalSource, view.hash);
     this.#onFirstResult = onFirstResult;
     this.#draft = view.originalSource;
     this.#variable = notebook.add({
@@ -53,7 +47,7 @@ export class LiveCell {
       rejected: (error, name) => {
         view.setState('rejected');
         view.clearOutput();
-        view.setError('runtime', this.#describeFailure(error, name));
+        view.setError('runtime', notebook.describeFailure(error, name));
         this.#firstResult();
       },
     });
@@ -62,21 +56,18 @@ export class LiveCell {
 
   /** Defines the cell: with the reader's saved edit if it matches this chapter, else the original. */
   async start(): Promise<void> {
-    const saved = this.#store.load(this.#view.id);
-    if (saved && saved.source !== this.#view.originalSource) {
-      if (saved.base === this.#view.hash) {
-        this.#showDraft(saved.source);
-        if (await this.#apply(saved.source)) return;
-      } else {
-        this.#offerStale(saved);
-      }
+    const starting = this.#drafts.starting();
+    if (starting.kind === 'apply') {
+      this.#showDraft(starting.source);
+      if (await this.#apply(starting.source)) return;
+    } else if (starting.kind === 'offer') {
+      this.#offer(starting.edit);
     }
     this.#defineOriginal();
   }
 
   /** Runs what the reader sees now (Run button, Shift+Enter). */
   async run(): Promise<void> {
-    clearTimeout(this.#saveTimer);
     const source = this.#editor?.source ?? this.#draft;
     this.#draft = source;
     this.#view.setBusy(true);
@@ -85,15 +76,15 @@ export class LiveCell {
     } finally {
       this.#view.setBusy(false);
     }
-    if (this.#offer && source !== this.#view.originalSource) this.#dismissOffer();
-    this.#persist(source);
+    // Running changed text while an old edit is on offer means the reader moved on.
+    if (this.#drafts.offering && source !== this.#view.originalSource) this.#closeOffer();
+    this.#drafts.commit(source);
   }
 
   /** Back to the chapter's original. Undoable in the editor with Ctrl+Z. */
-  async reset(): Promise<void> {
-    clearTimeout(this.#saveTimer);
+  reset(): void {
     this.#showDraft(this.#view.originalSource);
-    this.#persist(this.#view.originalSource);
+    this.#drafts.commit(this.#view.originalSource);
     this.#view.setError('compile', null);
     this.#defineOriginal();
   }
@@ -103,11 +94,12 @@ export class LiveCell {
     this.#editorLoading ??= loadEditor().then(({ mountEditor }) => {
       const pre = this.#view.staticCode;
       const hadFocus = pre !== null && pre === document.activeElement;
+      const name = this.#view.root.dataset.cellName;
       this.#editor = mountEditor(
         this.#view.editorHost,
         {
           source: this.#draft,
-          label: this.#view.root.dataset.cellName ? `Code cell ${this.#view.root.dataset.cellName}` : 'Code cell',
+          label: name ? `Code cell ${name}` : 'Code cell',
           onRun: () => void this.run(),
           onChange: (source) => this.#changed(source),
         },
@@ -116,6 +108,18 @@ export class LiveCell {
       if (hadFocus) this.#editor.focus();
     });
     return this.#editorLoading;
+  }
+
+  /**
+   * The idle preload's way in: leaves a cell alone while the reader has text
+   * selected in it (replacing the `<pre>` would drop the selection); the first
+   * interaction mounts it instead.
+   */
+  mountWhenIdle(): Promise<void> {
+    const selection = document.getSelection();
+    const host = this.#view.editorHost;
+    if (selection && !selection.isCollapsed && host.contains(selection.anchorNode)) return Promise.resolve();
+    return this.mountEditor();
   }
 
   #listen(): void {
@@ -130,12 +134,13 @@ export class LiveCell {
       }
     });
     this.#view.runButton.addEventListener('click', () => void this.run());
-    this.#view.resetButton.addEventListener('click', () => void this.reset());
+    this.#view.resetButton.addEventListener('click', () => this.reset());
   }
 
   /**
-   * Compiles and defines `source`. On a syntax error the old definition keeps
-   * running and the error shows under the cell; returns whether it took.
+   * Compiles and defines `source`, loading the parser unless it is the
+   * original (which the build parsed). On a syntax error the old definition
+   * keeps running and the error shows under the cell; returns whether it took.
    */
   async #apply(source: string): Promise<boolean> {
     let spec: CellSpec;
@@ -168,17 +173,7 @@ export class LiveCell {
   #changed(source: string): void {
     this.#draft = source;
     this.#view.setEdited(source !== this.#view.originalSource);
-    clearTimeout(this.#saveTimer);
-    // While an old edit is on offer, typing must not overwrite it; Run decides.
-    if (!this.#offer) this.#saveTimer = setTimeout(() => this.#persist(source), SAVE_DELAY_MS);
-  }
-
-  #persist(source: string): void {
-    const edited = source !== this.#view.originalSource;
-    this.#view.setEdited(edited);
-    if (this.#offer) return;
-    if (edited) this.#store.save(this.#view.id, source, this.#view.hash);
-    else this.#store.forget(this.#view.id);
+    this.#drafts.changed(source);
   }
 
   #showDraft(source: string): void {
@@ -188,40 +183,30 @@ export class LiveCell {
     this.#view.setEdited(source !== this.#view.originalSource);
   }
 
-  #offerStale(saved: SavedEdit): void {
-    this.#offer = saved;
-    const when = new Date(saved.savedAt).toLocaleDateString();
+  #offer(edit: SavedEdit): void {
+    const when = new Date(edit.savedAt).toLocaleDateString();
     this.#view.showNotice(`This cell changed since your edit of ${when}.`, [
       {
         label: 'Restore my edit',
         run: () => {
-          this.#dismissOffer();
-          this.#showDraft(saved.source);
+          this.#closeOffer();
+          this.#showDraft(edit.source);
           void this.run();
         },
       },
       {
         label: 'Discard',
         run: () => {
-          this.#dismissOffer();
-          this.#persist(this.#draft);
+          this.#closeOffer();
+          this.#drafts.commit(this.#draft);
         },
       },
     ]);
   }
 
-  #dismissOffer(): void {
-    this.#offer = null;
+  #closeOffer(): void {
+    this.#drafts.closeOffer();
     this.#view.clearNotice();
-  }
-
-  /** A failure that came through an input names that input, so the reader looks in the right cell. */
-  #describeFailure(error: unknown, name: string | null): string {
-    const input = error instanceof RuntimeError ? error.input : undefined;
-    if (input && input !== name && this.#notebook.isCell(input)) {
-      return `RuntimeError: input ${input} failed: ${(error as Error).message}`;
-    }
-    return formatError(error);
   }
 
   #firstResult(): void {

@@ -12,8 +12,8 @@ import { EditorState, Prec } from '@codemirror/state';
 import { EditorView, highlightSpecialChars, keymap } from '@codemirror/view';
 import { defaultKeymap, history, historyKeymap } from '@codemirror/commands';
 import { bracketMatching, indentOnInput, syntaxHighlighting } from '@codemirror/language';
-import { javascript } from '@codemirror/lang-javascript';
 import { classHighlighter } from '@lezer/highlight';
+import { cellJavascript } from './cell-language.ts';
 
 /** What a cell needs from its editor. */
 export interface CellEditor {
@@ -57,7 +57,7 @@ export function mountEditor(host: HTMLElement, options: EditorOptions, clickAt?:
       indentOnInput(),
       bracketMatching(),
       keymap.of([...defaultKeymap, ...historyKeymap]),
-      javascript(),
+      cellJavascript(),
       syntaxHighlighting(classHighlighter),
       cellTheme,
       EditorView.contentAttributes.of({ 'aria-label': options.label }),

@@ -5,7 +5,7 @@
 import { Runtime, RuntimeError, type Module, type Observer, type Variable } from '@observablehq/runtime';
 import type { BuiltinDefinition } from './builtins.ts';
 import type { CellDefinition } from './compile.ts';
-import type { CellSpec } from './spec.ts';
+import { formatError, type CellSpec } from './spec.ts';
 
 export type { Observer as CellObserver, Variable as CellVariable };
 
@@ -43,6 +43,18 @@ export class Notebook {
   /** True when a cell (not a builtin, not an unknown name) defines `name`. */
   isCell(name: string): boolean {
     return this.#definers.has(name);
+  }
+
+  /**
+   * The line shown under a failed cell. A failure that came through an input
+   * names that input, so the reader looks in the right cell; an unknown name
+   * is reported by the cell that used it.
+   */
+  describeFailure(error: unknown, name: string | null): string {
+    if (error instanceof RuntimeError && error.input && error.input !== name && this.isCell(error.input)) {
+      return `RuntimeError: input ${error.input} failed: ${error.message}`;
+    }
+    return formatError(error);
   }
 
   dispose(): void {

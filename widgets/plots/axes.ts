@@ -24,7 +24,25 @@ export interface AxisStyle {
 }
 
 /** Room left of the plot area for y tick labels, and below it for t labels. */
-export const MARGIN = { left: 52, right: 10, top: 8, bottom: 24 };
+export const MARGIN = { left: 56, right: 10, top: 8, bottom: 24 };
+
+/** Labels closer than this (CSS pixels) to a kept one are dropped. */
+export const MIN_LABEL_GAP = 13;
+
+/**
+ * The ticks whose labels do not crowd each other: 0 is kept first, then the
+ * largest magnitudes, each only if it is at least `gap` pixels from every
+ * tick already kept. A symlog axis bunches ±1, ±10 around 0; this thins them.
+ */
+export function spacedTicks(values: readonly number[], position: (v: number) => number, gap = MIN_LABEL_GAP): number[] {
+  const order = [...values].sort((a, b) => (a === 0 ? -1 : b === 0 ? 1 : Math.abs(b) - Math.abs(a)));
+  const kept: { v: number; at: number }[] = [];
+  for (const v of order) {
+    const at = position(v);
+    if (kept.every((k) => Math.abs(k.at - at) >= gap)) kept.push({ v, at });
+  }
+  return kept.map((k) => k.v).sort((a, b) => a - b);
+}
 
 /** Horizontal grid lines and left tick labels for y ticks at `position(v)`. */
 export function drawYAxis(ctx: Context, box: Box, ticks: Ticks, position: (v: number) => number, style: AxisStyle): void {
@@ -32,7 +50,7 @@ export function drawYAxis(ctx: Context, box: Box, ticks: Ticks, position: (v: nu
   ctx.textAlign = 'right';
   ctx.textBaseline = 'middle';
   ctx.lineWidth = 1;
-  for (const v of ticks.values) {
+  for (const v of spacedTicks(ticks.values, position)) {
     const y = Math.round(position(v)) + 0.5;
     if (y < box.y - 0.5 || y > box.y + box.height + 0.5) continue;
     ctx.strokeStyle = v === 0 ? style.axis : style.grid;
@@ -43,7 +61,7 @@ export function drawYAxis(ctx: Context, box: Box, ticks: Ticks, position: (v: nu
     ctx.stroke();
     ctx.globalAlpha = 1;
     ctx.fillStyle = style.text;
-    ctx.fillText(ticks.format(v), box.x - 6, y);
+    ctx.fillText(ticks.format(v), box.x - 6, y, box.x - 8); // squeezed rather than cut when too wide
   }
   frameLine(ctx, style, box.x + 0.5, box.y, box.x + 0.5, box.y + box.height);
 }

@@ -55,7 +55,7 @@ export function symlogTicks(lo: number, hi: number, count: number, c = 1): numbe
 export function formatTick(v: number): string {
   if (v === 0) return '0';
   const a = Math.abs(v);
-  if (a >= 1e-3 && a < 1e5) return String(Number(v.toPrecision(6)));
+  if (a >= 1e-3 && a < 1e5) return String(Number(v.toPrecision(6))).replace('-', '−');
   const exponent = Math.floor(Math.log10(a));
   const mantissa = Number((v / 10 ** exponent).toPrecision(3));
   return `${mantissa === 1 ? '' : mantissa === -1 ? '−' : `${mantissa}×`}10${superscript(exponent)}`;

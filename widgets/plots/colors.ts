@@ -37,19 +37,33 @@ export interface Theme {
   font: string;
 }
 
-/** Reads the theme from computed style; custom properties fall back to the values above. */
+/**
+ * Reads the theme from computed style. Colours go through a probe element so
+ * that whatever the site writes (var(), light-dark(), color-mix()) arrives
+ * as a plain rgb() string the canvas understands; custom properties fall back
+ * to the values above.
+ */
 export function resolveTheme(element: Element): Theme {
   const style = getComputedStyle(element);
-  const prop = (name: string, fallback: string): string => style.getPropertyValue(name).trim() || fallback;
-  const text = prop('--muted', style.color || '#6b7280');
-  return {
-    text,
-    axis: prop('--pb-axis', text),
-    grid: prop('--pb-grid', 'rgba(128, 128, 128, 0.18)'),
-    background: prop('--bg', opaqueBackground(element)),
-    series: PALETTE.map((c, i) => prop(`--pb-series-${i + 1}`, c)),
-    font: `11px ${prop('--pb-plot-font', style.fontFamily || 'system-ui, sans-serif')}`,
+  const probe = document.createElement('span');
+  probe.style.display = 'none';
+  element.append(probe);
+  const color = (value: string, fallback: string): string => {
+    probe.style.color = fallback;
+    probe.style.color = value;
+    return getComputedStyle(probe).color || fallback;
   };
+  const text = color('var(--muted, var(--text, var(--fg)))', '#6b7280');
+  const theme: Theme = {
+    text,
+    axis: color(`var(--pb-axis, ${text})`, text),
+    grid: color('var(--pb-grid, var(--rule, rgba(128, 128, 128, 0.25)))', 'rgba(128, 128, 128, 0.25)'),
+    background: color(`var(--bg, ${opaqueBackground(element)})`, '#ffffff'),
+    series: PALETTE.map((c, i) => color(`var(--pb-series-${i + 1}, ${c})`, c)),
+    font: `11px ${style.getPropertyValue('--pb-plot-font').trim() || style.fontFamily || 'system-ui, sans-serif'}`,
+  };
+  probe.remove();
+  return theme;
 }
 
 /** The first non-transparent background colour up the tree, or white. */

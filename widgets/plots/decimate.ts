@@ -125,34 +125,62 @@ export class ColumnDecimator {
   }
 }
 
+/** Indices [i0, i1) of the pending columns c with c0 ≤ c < c1 (pending columns increase). */
+export function pendingRange(d: ColumnDecimator, c0: number, c1: number): [number, number] {
+  const search = (c: number): number => {
+    let lo = 0;
+    let hi = d.count;
+    while (lo < hi) {
+      const mid = (lo + hi) >>> 1;
+      if (d.columns[mid] < c) lo = mid + 1;
+      else hi = mid;
+    }
+    return lo;
+  };
+  return [search(c0), search(c1)];
+}
+
 /**
- * Strokes series s of the pending columns as one path, shifted left by
- * `offset` columns, at pixel centres (x + 0.5). The caller sets the style.
+ * Strokes series s of pending columns [i0, i1) as one path, shifted left by
+ * `offset` columns, at pixel centres (x + 0.5), joined onto the column before
+ * i0 (or the pen). The caller sets the style.
  */
-export function strokeColumns(ctx: Context, d: ColumnDecimator, s: number, offset: number): void {
-  const { series: n, count, columns, first, min, max, last } = d;
-  let down = d.penY[s] === d.penY[s];
+export function strokeColumns(ctx: Context, d: ColumnDecimator, s: number, offset: number, i0 = 0, i1 = d.count): void {
+  const { series: n, columns, first, min, max, last } = d;
+  const before = (i0 - 1) * n + s;
+  const penX = i0 > 0 ? columns[i0 - 1] : d.penX[s];
+  const penY = i0 > 0 ? (first[before] === first[before] ? last[before] : NaN) : d.penY[s];
+  let down = penY === penY;
+  // a subpath that is still a single point gets a 1-pixel dash when it ends, so it shows
+  let lone = false;
+  let lx = 0;
+  let ly = 0;
   ctx.beginPath();
-  if (down) ctx.moveTo(d.penX[s] - offset + 0.5, d.penY[s]);
-  for (let i = 0; i < count; i++) {
+  if (down) ctx.moveTo(penX - offset + 0.5, penY);
+  for (let i = i0; i < i1; i++) {
     const k = i * n + s;
     const f = first[k];
     if (f !== f) {
-      down = false;
+      if (lone) ctx.lineTo(lx + 1, ly);
+      lone = down = false;
       continue;
     }
     const x = columns[i] - offset + 0.5;
-    if (down) ctx.lineTo(x, f);
-    else ctx.moveTo(x, f);
     const lo = min[k];
     const hi = max[k];
     const l = last[k];
+    if (down) ctx.lineTo(x, f);
+    else ctx.moveTo(x, f);
+    lone = !down && !(lo < hi);
+    lx = x;
+    ly = f;
     if (lo < hi) {
       if (lo !== f) ctx.lineTo(x, lo);
       ctx.lineTo(x, hi);
       if (l !== hi) ctx.lineTo(x, l);
-    } else if (!down) ctx.lineTo(x + 0.01, f); // a lone point still leaves a dot
+    }
     down = true;
   }
+  if (lone) ctx.lineTo(lx + 1, ly);
   ctx.stroke();
 }

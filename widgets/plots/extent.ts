@@ -68,7 +68,7 @@ export function padInterval(lo: number, hi: number, headroom: number, kind: Axis
   const pad = (b - a) * headroom;
   a = untransform(kind, a - pad, c);
   b = untransform(kind, b + pad, c);
-  if (kind === 'linear') [a, b] = scaleLinear().domain([a, b]).nice(8).domain() as [number, number];
+  if (kind === 'linear') [a, b] = scaleLinear().domain([a, b]).nice(16).domain() as [number, number];
   return [a, b];
 }
 
@@ -84,6 +84,29 @@ export function growExtent(
   const [x0, x1] = padInterval(Math.min(current.x0, data.x0), Math.max(current.x1, data.x1), headroom, xKind, c);
   const [y0, y1] = padInterval(Math.min(current.y0, data.y0), Math.max(current.y1, data.y1), headroom, yKind, c);
   return { x0, x1, y0, y1 };
+}
+
+/**
+ * `next` widened so that on each axis where it outgrew `previous` its span is
+ * at least `factor` times the old one, extended on the side that grew: a
+ * plot that keeps growing (particles flying off) is then redrawn a
+ * logarithmic number of times, not once per small step outward.
+ */
+export function stretchGrowth(previous: Extent, next: Extent, factor: number, xKind: AxisKind = 'linear', yKind: AxisKind = 'linear', c = 1): Extent {
+  if (isEmpty(previous)) return next;
+  const [x0, x1] = stretch(previous.x0, previous.x1, next.x0, next.x1, factor, xKind, c);
+  const [y0, y1] = stretch(previous.y0, previous.y1, next.y0, next.y1, factor, yKind, c);
+  return { x0, x1, y0, y1 };
+}
+
+function stretch(oldLo: number, oldHi: number, lo: number, hi: number, factor: number, kind: AxisKind, c: number): [number, number] {
+  const [a0, a1, b0, b1] = [oldLo, oldHi, lo, hi].map((v) => transform(kind, v, c));
+  const grewLow = b0 < a0;
+  const grewHigh = b1 > a1;
+  const extra = factor * (a1 - a0) - (b1 - b0);
+  if ((!grewLow && !grewHigh) || !(extra > 0)) return [lo, hi];
+  const low = grewLow && grewHigh ? extra / 2 : grewLow ? extra : 0;
+  return [untransform(kind, b0 - low, c), untransform(kind, b1 + (extra - low), c)];
 }
 
 /**

@@ -67,3 +67,10 @@ export function basisLine(window: 'hamming' | 'none', t0: number, duration: numb
   ];
   return parts.join(' · ');
 }
+
+/** How the strongest peak compares with the chapter's prediction, e.g. "strongest peak 1.518 vs theory 1.518: +0.01%". */
+export function compareWithTheory(peak: Peak, theory: { frequency: number; label: string }, duration: number): string {
+  const relative = (peak.frequency - theory.frequency) / theory.frequency;
+  const percent = `${relative >= 0 ? '+' : '−'}${Math.abs(100 * relative).toFixed(2)}%`;
+  return `strongest peak ${fixed(peak.frequency, frequencyDecimals(duration))} vs ${theory.label}: ${percent}`;
+}

@@ -1,6 +1,6 @@
 import { makeMapping, type Mapping } from './axis-scale.ts';
 import { MARGIN, type Rect } from './draw-axes.ts';
-import { contains, emptyExtent, fitEqualAspect, growExtent, includePoint, isEmpty, type AxisKind, type Extent } from './extent.ts';
+import { contains, emptyExtent, fitEqualAspect, growExtent, includePoint, isEmpty, stretchGrowth, transform, type AxisKind, type Extent } from './extent.ts';
 import { makePens, type Pens } from './trace.ts';
 
 /** One line on a plane plot: the record columns of its x and y, and its colour group. */
@@ -55,6 +55,8 @@ export interface Panel {
 
 /** Fraction of the data span added on each side when an auto extent grows. */
 export const HEADROOM = 0.08;
+/** An auto extent that must grow grows at least this much on the axis that grew. */
+export const GROWTH = 1.4;
 
 export function makePanel(spec: PanelSpec): Panel {
   const ordered = [...spec.tracks].sort((a, b) => a.group - b.group);
@@ -126,10 +128,29 @@ export function growPanel(panel: Panel): boolean {
   if (spec.limit) clampTo(fresh, spec.limit);
   includePoint(data, fresh.x0, fresh.y0);
   includePoint(data, fresh.x1, fresh.y1);
-  if (!isEmpty(panel.fitted) && contains(panel.shown, fresh)) return false;
-  panel.fitted = growExtent(data, data, HEADROOM, spec.xKind, spec.yKind, spec.constant);
+  // `fitted` too: the aspect fit of `shown` can round a hair inside it.
+  if (!isEmpty(panel.fitted) && (contains(panel.shown, fresh) || contains(panel.fitted, fresh))) return false;
+  const grown = growExtent(data, data, HEADROOM, spec.xKind, spec.yKind, spec.constant);
+  panel.fitted = stretchGrowth(panel.fitted, grown, GROWTH, spec.xKind, spec.yKind, spec.constant);
   if (spec.limit) clampTo(panel.fitted, spec.limit);
   return true;
+}
+
+/**
+ * Tightens an auto extent that growth left much larger than its data (by
+ * more than a fifth of its span on an axis); returns whether it did.
+ */
+export function settlePanel(panel: Panel): boolean {
+  const { spec, data, fitted } = panel;
+  if (spec.extent || isEmpty(data) || isEmpty(fitted)) return false;
+  const tight = growExtent(data, data, HEADROOM, spec.xKind, spec.yKind, spec.constant);
+  if (spec.limit) clampTo(tight, spec.limit);
+  const span = (kind: AxisKind, lo: number, hi: number) => transform(kind, hi, spec.constant) - transform(kind, lo, spec.constant);
+  const loose =
+    span(spec.xKind, tight.x0, tight.x1) < 0.8 * span(spec.xKind, fitted.x0, fitted.x1) ||
+    span(spec.yKind, tight.y0, tight.y1) < 0.8 * span(spec.yKind, fitted.y0, fitted.y1);
+  if (loose) panel.fitted = tight;
+  return loose;
 }
 
 /** Sets the panel's rectangle, shown extent and mappings for the current fitted extent. */

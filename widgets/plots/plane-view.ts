@@ -1,10 +1,10 @@
 import type { Simulation } from '../core/simulation.ts';
 import { unseen, type View } from '../simulator/view.ts';
-import { toPixel } from './axis-scale.ts';
+import { toPixel, type Mapping } from './axis-scale.ts';
 import { drawAxes, drawLegend } from './draw-axes.ts';
 import { includeRows, liftPens, traceRows, type Stroke } from './trace.ts';
 import { ageBuckets, Fader, FADE_FRAMES, parseTrail, type TrailOption } from './trail.ts';
-import { gridColumns, growPanel, makePanel, panelRect, placePanel, type Panel, type PanelSpec } from './plane-panels.ts';
+import { gridColumns, growPanel, makePanel, panelRect, placePanel, settlePanel, type Panel, type PanelSpec } from './plane-panels.ts';
 import { ViewFrame, type Layer } from './view-frame.ts';
 import { seriesColor } from './view-theme.ts';
 
@@ -20,7 +20,7 @@ export interface PlaneStyle {
   lineOpacity?: number;
   /** radius of the current-state dot in CSS px; 0 for none */
   dot?: number;
-  /** a step longer than this fraction of the panel is a jump, drawn as a break in the line; default 0.25 */
+  /** a step between samples longer than this fraction of the shown extent (in x or y) is a jump, drawn as a break in the line; default 0.25 */
   jump?: number;
   /** canvas height in CSS px, or a function of the width */
   height?: number | ((width: number) => number);
@@ -36,7 +36,9 @@ export interface PlaneDefinition extends PlaneStyle {
 }
 
 /** Age buckets a fading trail is redrawn in. */
-const BUCKETS = 12;
+const BUCKETS = 24;
+/** Frames without growth after which an auto extent left loose by growing is tightened. */
+const SETTLE_FRAMES = 45;
 /** Samples with the pen down closer than this (CSS px) to the last drawn point are skipped. */
 const MIN_STEP = 0.5;
 
@@ -51,6 +53,8 @@ export class PlaneView implements View {
   readonly frame: ViewFrame;
   private readonly base: Layer;
   private readonly trail: Layer;
+  /** a copy of the trail while it is rescaled, made when first needed */
+  private scratch: Layer | null = null;
   private readonly mode;
   private panels: Panel[] = [];
   private simulation: Simulation | null = null;
@@ -64,6 +68,8 @@ export class PlaneView implements View {
   private sinceRedraw = 0;
   private redrawCost = 0;
   private dirty = true;
+  /** frames drawn since an extent last grew */
+  private quiet = 0;
 
   constructor(private readonly definition: PlaneDefinition) {
     const { height } = definition;
@@ -93,7 +99,10 @@ export class PlaneView implements View {
       this.reset(simulation);
     }
     if (this.frame.measure()) this.relayout();
-    if (this.panels.length === 0) return;
+    if (this.panels.length === 0) {
+      if (this.dirty) this.compose();
+      return;
+    }
     const { from, to, total } = unseen(simulation, this.seen);
     if (from < to) {
       if (this.seen < record.dropped) for (const p of this.panels) liftPens(p.pens);
@@ -103,8 +112,12 @@ export class PlaneView implements View {
       const elapsed = Number.isFinite(this.lastTime) ? now - this.lastTime : 0;
       if (elapsed > 0) this.frameTime = this.frameTime > 0 ? 0.9 * this.frameTime + 0.1 * elapsed : elapsed;
       this.lastTime = now;
-      if (grew) this.relayout();
-      else this.advance(from, to, this.mode.kind === 'frames' ? 1 : elapsed);
+      this.quiet = grew ? 0 : this.quiet + 1;
+      const step = this.mode.kind === 'frames' ? 1 : elapsed;
+      if (grew) {
+        if (this.relayout(true)) this.advance(from, to, step);
+      } else if (this.quiet === SETTLE_FRAMES && this.holdsTrail() && this.panels.map(settlePanel).some(Boolean)) this.relayout();
+      else this.advance(from, to, step);
     }
     if (this.dirty) this.compose();
   }
@@ -138,7 +151,8 @@ export class PlaneView implements View {
   }
 
   private naturalHeight(width: number): number {
-    const count = Math.max(1, this.panels.length);
+    if (this.panels.length === 0) return 120; // room for the message saying why there is nothing to draw
+    const count = this.panels.length;
     const columns = gridColumns(count, width);
     return Math.ceil(count / columns) * this.definition.panelHeight(width / columns);
   }
@@ -159,10 +173,17 @@ export class PlaneView implements View {
     return grew;
   }
 
-  /** Places panels, redraws the axes and the whole trail. */
-  private relayout(): void {
+  /**
+   * Places panels and redraws the axes and the whole trail: from the record
+   * when it still holds the trail, otherwise (with `rescale`, after an
+   * extent grew) by scaling the old trail image, so that a record too short
+   * for the trail does not erase it. Returns whether it rescaled, in which
+   * case the newest rows are still to be drawn.
+   */
+  private relayout(rescale = false): boolean {
     const { frame } = this;
     const count = this.panels.length;
+    const before = this.panels.map((p) => ({ mx: p.mx, my: p.my }));
     this.panels.forEach((p, i) => placePanel(p, panelRect(i, count, frame.width, frame.height)));
     const g = this.base.context;
     g.clearRect(0, 0, frame.width, frame.height);
@@ -172,8 +193,54 @@ export class PlaneView implements View {
       const items = spec.legend.map((l) => ({ label: l.label, color: this.color(l.group) }));
       drawLegend(g, panel.rect, items, frame.theme, spec.title);
     }
-    this.redrawTrail();
+    const linear = this.panels.every((p) => p.mx.kind === 'linear' && p.my.kind === 'linear');
+    const rescaled = rescale && linear && !this.holdsTrail();
+    if (rescaled) this.rescaleTrail(before);
+    else this.redrawTrail();
     this.dirty = true;
+    return rescaled;
+  }
+
+  /** Whether the record still reaches back to the oldest part of the trail. */
+  private holdsTrail(): boolean {
+    const record = this.simulation?.record;
+    if (!record || record.dropped === 0 || this.mode.kind === 'none') return true;
+    if (this.mode.kind === 'full') return false;
+    const length = this.mode.kind === 'frames' ? FADE_FRAMES * this.frameTime : this.mode.length;
+    return record.length > 0 && record.time(0) <= record.time(record.length - 1) - length;
+  }
+
+  /** Redraws the trail image under each panel's new mapping (linear axes), and moves the pens with it. */
+  private rescaleTrail(before: readonly { mx: Mapping; my: Mapping }[]): void {
+    const { frame, trail } = this;
+    const copy = (this.scratch ??= frame.layer());
+    const c = copy.context;
+    c.save();
+    c.setTransform(1, 0, 0, 1, 0, 0);
+    c.clearRect(0, 0, copy.canvas.width, copy.canvas.height);
+    c.drawImage(trail.canvas, 0, 0);
+    c.restore();
+    const g = trail.context;
+    g.clearRect(0, 0, frame.width, frame.height);
+    this.panels.forEach((panel, i) => {
+      const old = before[i];
+      const sx = panel.mx.a / old.mx.a;
+      const sy = panel.my.a / old.my.a;
+      const ox = panel.mx.b - sx * old.mx.b;
+      const oy = panel.my.b - sy * old.my.b;
+      g.save();
+      g.beginPath();
+      g.rect(panel.rect.left, panel.rect.top, panel.rect.width, panel.rect.height);
+      g.clip();
+      g.transform(sx, 0, 0, sy, ox, oy);
+      g.drawImage(copy.canvas, 0, 0, frame.width, frame.height);
+      g.restore();
+      const { pens } = panel;
+      for (let k = 0; k < pens.x.length; k++) {
+        pens.x[k] = sx * pens.x[k] + ox;
+        pens.y[k] = sy * pens.y[k] + oy;
+      }
+    });
   }
 
   /** Redraws the trail layer from the record, oldest age bucket first. */
@@ -201,8 +268,9 @@ export class PlaneView implements View {
   private advance(from: number, to: number, elapsed: number): void {
     const alpha = this.fader.advance(elapsed);
     this.sinceRedraw += elapsed;
-    // A cheap redraw now and then clears the faint ghost that 8-bit fading leaves (see trail.ts).
-    if (this.mode.kind !== 'full' && this.sinceRedraw > 4 * this.mode.length && this.redrawCost < 6) {
+    // A redraw every trail length or four, if cheap, clears the faint ghost that 8-bit fading leaves (see trail.ts).
+    const cleanEvery = this.redrawCost < 2 ? 1 : this.redrawCost < 6 ? 4 : Infinity;
+    if (this.mode.kind !== 'full' && this.sinceRedraw > cleanEvery * this.mode.length) {
       this.redrawTrail();
     } else {
       if (alpha > 0) {
@@ -228,8 +296,9 @@ export class PlaneView implements View {
     g.lineWidth = lineWidth;
     g.globalAlpha = opacity * lineOpacity;
     for (const panel of this.panels) {
-      const { rect, pens, xs, ys } = panel;
-      const stroke: Stroke = { minStep: MIN_STEP, jump: (this.definition.jump ?? 0.25) * Math.min(rect.width, rect.height) };
+      const { rect, pens, xs, ys, shown } = panel;
+      const jump = this.definition.jump ?? 0.25;
+      const stroke: Stroke = { minStep: MIN_STEP, jumpX: jump * (shown.x1 - shown.x0), jumpY: jump * (shown.y1 - shown.y0) };
       g.save();
       g.beginPath();
       g.rect(rect.left, rect.top, rect.width, rect.height);
@@ -254,7 +323,8 @@ export class PlaneView implements View {
     frame.compose(this.base);
     frame.compose(this.trail);
     const record = this.simulation?.record;
-    const radius = this.definition.dot ?? (this.trackCount() > 50 ? 1.6 : 4);
+    const tracks = this.trackCount();
+    const radius = this.definition.dot ?? (tracks > 100 ? 1.6 : tracks > 10 ? 2.5 : 4);
     if (record && record.length && radius > 0) this.drawDots(record.length - 1, radius);
     frame.markReady();
     this.dirty = false;

@@ -99,12 +99,29 @@ export class ScrollBuffer {
     for (let k = k0; k <= k1; k++) paint(this.claim(k), k * this.width);
   }
 
-  /** Blits the tiles visible in the view that ends before column `end`, onto a cleared target. */
-  composite(target: Context, end: number, x = 0, y = 0): void {
+  /**
+   * Where ring slot `slot` shows in the view that ends before column `end`:
+   * the x of its left edge in device pixels, or NaN when it is not visible.
+   * A display moves each slot's canvas there (the paper's sprites) or blits it.
+   */
+  placement(slot: number, end: number): number {
+    const k = this.held[slot];
+    if (k !== k) return NaN;
     const left = viewLeft(end, this.width);
     const last = tileOf(Math.max(left, end - 1), this.width);
-    for (let k = tileOf(left, this.width); k <= last; k++) {
-      if (this.holds(k)) target.drawImage(this.surfaces[slotOf(k)] as CanvasImageSource, x + tileX(k, this.width, left), y);
+    return k >= tileOf(left, this.width) && k <= last ? tileX(k, this.width, left) : NaN;
+  }
+
+  /** The canvas of ring slot `slot`. */
+  surface(slot: number): Surface {
+    return this.surfaces[slot];
+  }
+
+  /** Blits the tiles visible in the view that ends before column `end` onto `target` at (x, y). */
+  composite(target: Context, end: number, x = 0, y = 0): void {
+    for (let slot = 0; slot < SLOTS; slot++) {
+      const at = this.placement(slot, end);
+      if (at === at) target.drawImage(this.surfaces[slot] as CanvasImageSource, x + at, y);
     }
   }
 }

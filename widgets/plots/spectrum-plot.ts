@@ -80,12 +80,19 @@ function drawTheory(g: CanvasRenderingContext2D, rect: Rect, mx: Mapping, theory
   g.lineTo(x, rect.top + rect.height);
   g.stroke();
   g.globalAlpha = 1;
-  g.fillStyle = theme.fg;
   g.font = fontOf(theme, 11.5);
   g.textBaseline = 'top';
-  const right = x + 6 + g.measureText(theory.label).width > rect.left + rect.width;
-  g.textAlign = right ? 'right' : 'left';
-  g.fillText(theory.label, right ? x - 5 : x + 5, rect.top + 5);
+  const width = g.measureText(theory.label).width;
+  const right = x + 6 + width > rect.left + rect.width;
+  const left = right ? x - 6 - width : x + 5;
+  // a backing of the background colour keeps the label readable over grid and lines
+  g.fillStyle = theme.bg;
+  g.globalAlpha = 0.85;
+  g.fillRect(left - 2, rect.top + 3, width + 4, 15);
+  g.globalAlpha = 1;
+  g.fillStyle = theme.fg;
+  g.textAlign = 'left';
+  g.fillText(theory.label, left, rect.top + 5);
   g.restore();
 }
 
@@ -97,7 +104,7 @@ function drawPeakMarks(g: CanvasRenderingContext2D, rect: Rect, mx: Mapping, my:
   peaks.forEach((p, i) => {
     if (!(p.frequency <= maxFrequency)) return;
     const x = mx.scale(p.frequency);
-    const y = Math.max(rect.top + 16, my.scale(p.amplitude) - 5);
+    const y = Math.max(rect.top + 34, my.scale(p.amplitude) - 5);
     g.fillStyle = theme.fg;
     g.beginPath();
     g.moveTo(x - 4, y - 7);

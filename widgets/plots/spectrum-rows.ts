@@ -25,6 +25,17 @@ export const MIN_SAMPLES = 64;
 /** The part of a record `chooseRows` reads. */
 export type TimedRows = Pick<TrajectoryRecord, 'length' | 'time' | 'range'>;
 
+/** Rows [from, to) of the record within `span`. */
+export function rowsInSpan(rows: TimedRows, span: SpanOption | undefined): [number, number] {
+  const n = rows.length;
+  if (n === 0) return [0, 0];
+  if (typeof span === 'number') {
+    const last = rows.time(n - 1);
+    return rows.range(last - span, last);
+  }
+  return span ? rows.range(span[0], span[1]) : [0, n];
+}
+
 /**
  * Chooses rows for a spectrum over `span`, thinned by block means to at most
  * `maxSamples` (a mean over `stride` rows is a mild low-pass, so that the
@@ -33,15 +44,7 @@ export type TimedRows = Pick<TrajectoryRecord, 'length' | 'time' | 'range'>;
  * is always used. Returns null when there are fewer than MIN_SAMPLES.
  */
 export function chooseRows(rows: TimedRows, span: SpanOption | undefined, maxSamples: number): RowChoice | null {
-  const n = rows.length;
-  if (n < 2) return null;
-  let [from, to] = [0, n];
-  if (typeof span === 'number') {
-    const last = rows.time(n - 1);
-    [from, to] = rows.range(last - span, last);
-  } else if (span) {
-    [from, to] = rows.range(span[0], span[1]);
-  }
+  let [from, to] = rowsInSpan(rows, span);
   const available = to - from;
   if (available < MIN_SAMPLES) return null;
   const stride = Math.max(1, Math.ceil(available / Math.max(MIN_SAMPLES, maxSamples)));

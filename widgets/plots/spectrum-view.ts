@@ -1,14 +1,14 @@
-import { findPeaks, spectrum, type Peak, type Spectrum, type WindowName } from '../core/spectrum.ts';
+import { spectrum, type Peak, type Spectrum, type WindowName } from '../core/spectrum.ts';
 import type { Simulation } from '../core/simulation.ts';
 import type { View } from '../simulator/view.ts';
 import { drawAxes, fontOf } from './draw-axes.ts';
-import { dropLeakage } from './peak-filter.ts';
-import { basisLine, fixed, frequencyDecimals, peakLine } from './peak-readout.ts';
+import { analyse, theoryOf } from './spectrum-analysis.ts';
+import { basisLine, compareWithTheory, fixed, peakLine, significant } from './peak-readout.ts';
 import { columnsOf } from './plane-columns.ts';
 import { controlRow, selectControl, seriesChoices, type SelectControl } from './spectrum-controls.ts';
 import { drawSpectrum, lastBin, spectrumMappings, type SpectrumPicture, type SpectrumShow } from './spectrum-plot.ts';
-import { chooseRows, gatherSamples, MIN_SAMPLES, type RowChoice, type SpanOption } from './spectrum-rows.ts';
-import { chooseMaxFrequency, padFor, steadyLimit } from './spectrum-scale.ts';
+import { chooseRows, gatherSamples, MIN_SAMPLES, rowsInSpan, type RowChoice, type SpanOption } from './spectrum-rows.ts';
+import { chooseMaxFrequency, largestShown, padFor, steadyLimit } from './spectrum-scale.ts';
 import { SpectrumReadout } from './spectrum-readout.ts';
 import { ViewFrame } from './view-frame.ts';
 
@@ -104,10 +104,11 @@ class SpectrumViewImpl implements SpectrumView {
   }
 
   draw(simulation: Simulation): void {
-    if (simulation !== this.simulation || simulation.record.columns !== this.columns) this.reset(simulation);
-    if (this.frame.measure()) this.render();
     const { record } = simulation;
     const total = record.dropped + record.length;
+    // a different simulation, or this one restarted (its record holds fewer samples than were transformed)
+    if (simulation !== this.simulation || record.columns !== this.columns || total < this.computedTotal) this.reset(simulation);
+    if (this.frame.measure()) this.render();
     const now = performance.now();
     if (total !== this.computedTotal && now - this.computedAt >= (this.options.refresh ?? 250)) this.update();
   }
@@ -117,7 +118,9 @@ class SpectrumViewImpl implements SpectrumView {
     this.columns = simulation.record.columns;
     this.maxFrequency = this.yMax = undefined;
     try {
-      const wanted = this.options.series ?? simulation.model.names[0];
+      // A series the reader chose survives a restart; otherwise the chapter's choice, or the first coordinate.
+      const kept = this.series !== '' && this.columns.includes(this.series) ? this.series : undefined;
+      const wanted = kept ?? this.options.series ?? simulation.model.names[0];
       this.series = this.columns[columnsOf(this.columns, wanted, simulation.count)[0]];
       this.frame.say(null);
     } catch (error) {
@@ -137,7 +140,9 @@ class SpectrumViewImpl implements SpectrumView {
     const column = record.columnIndex(this.series);
     const choice = column > 0 ? chooseRows(record, this.options.span, this.options.maxSamples ?? 32768) : null;
     if (!choice || column <= 0) {
-      this.clearResult(`Not enough samples yet: ${Math.min(record.length, MIN_SAMPLES)} of the ${MIN_SAMPLES} needed`);
+      const [from, to] = rowsInSpan(record, this.options.span);
+      if (column > 0) this.clearResult(`Not enough samples yet: ${to - from} of the ${MIN_SAMPLES} needed`);
+      else this.clearResult('Choose a series from the list above.', false);
     } else {
       try {
         this.computeFrom(column, choice);
@@ -159,6 +164,7 @@ class SpectrumViewImpl implements SpectrumView {
 
   private choose(change: () => void): void {
     change();
+    this.frame.say(null);
     this.maxFrequency = this.yMax = undefined;
     this.update();
   }
@@ -167,19 +173,14 @@ class SpectrumViewImpl implements SpectrumView {
     const record = this.simulation!.record;
     if (this.buffer.length < choice.samples) this.buffer = new Float64Array(Math.max(choice.samples, 2 * this.buffer.length));
     const samples = gatherSamples(record, column, choice, this.buffer);
-    const s = spectrum(samples, choice.interval, { window: this.window });
-    let strongest = 0;
-    for (let k = 1; k < s.amplitude.length; k++) if (s.amplitude[k] > strongest) strongest = s.amplitude[k];
-    const wanted = this.options.peaks ?? 3;
-    const found = strongest > 0 && wanted > 0 ? findPeaks(s, { top: wanted + 4, refine: samples, minAmplitude: 2e-3 * strongest }) : [];
-    const peaks = dropLeakage(found, choice.duration, this.window).slice(0, wanted);
-    const theory = theoryOf(this.options.theory);
+    const { spectrum: s, peaks } = analyse(samples, choice.interval, this.window, this.options.peaks ?? 3);
+    const theory = theoryOf(this.options.theory, (f) => fixed(f, 3));
     const nyquist = 0.5 / choice.interval;
-    this.maxFrequency = Math.min(nyquist, this.options.maxFrequency ?? chooseMaxFrequency(peaks, nyquist, theory?.frequency, this.maxFrequency));
+    this.maxFrequency = Math.min(nyquist, this.options.maxFrequency ?? chooseMaxFrequency(peaks, nyquist, theory?.frequency, this.maxFrequency, choice.duration));
     // Zero-padding samples the same windowed DTFT more finely: a smooth curve where few bins fall on the axis.
     const pad = padFor(s, this.maxFrequency);
     const shown = pad > 1 ? spectrum(samples, choice.interval, { window: this.window, pad }) : s;
-    this.yMax = steadyLimit(largest(shown, this.show, lastBin(shown, this.maxFrequency)), this.yMax);
+    this.yMax = steadyLimit(largestShown(shown, this.show !== 'magnitude', lastBin(shown, this.maxFrequency)), this.yMax);
     this.spectrum = s;
     this.peaks = peaks;
     this.picture = { spectrum: shown, peaks, show: this.show, maxFrequency: this.maxFrequency, yMax: this.yMax, theory, series: this.series };
@@ -189,16 +190,16 @@ class SpectrumViewImpl implements SpectrumView {
     this.readout.show(
       peaks.map((p) => peakLine(p, choice.duration)),
       basisLine(this.window, t0, choice.duration, choice.samples, choice.stride),
-      theory && peaks.length ? comparison(peaks[0], theory, choice.duration) : undefined,
-      peaks.length ? undefined : 'No peaks: the series does not oscillate over this span.',
+      theory && peaks.length ? compareWithTheory(peaks[0], theory, choice.duration) : undefined,
+      peaks.length ? undefined : `No peaks: nothing completes 1.5 periods within the window (T = ${significant(choice.duration, 3)}).`,
     );
   }
 
-  private clearResult(message: string): void {
+  private clearResult(message: string, onCanvas = true): void {
     this.picture = null;
     this.spectrum = null;
     this.peaks = [];
-    this.waiting = message;
+    this.waiting = onCanvas ? message : '';
     delete this.element.dataset.peak;
     this.readout.show([], '', undefined, message);
   }
@@ -223,28 +224,4 @@ class SpectrumViewImpl implements SpectrumView {
     }
     frame.markReady();
   }
-}
-
-function theoryOf(option: SpectrumViewOptions['theory']): { frequency: number; label: string } | undefined {
-  if (option === undefined) return undefined;
-  const frequency = typeof option === 'number' ? option : option.frequency;
-  if (!(frequency > 0) || !Number.isFinite(frequency)) return undefined;
-  const label = typeof option === 'number' || option.label === undefined ? `theory ${fixed(frequency, 3)}` : option.label;
-  return { frequency, label };
-}
-
-/** The largest value drawn up to bin `end`: |X|, or |Re|, |Im| too when they are shown. */
-function largest(s: Spectrum, show: SpectrumShow, end: number): number {
-  let m = 0;
-  for (let k = 1; k <= end; k++) {
-    m = Math.max(m, s.amplitude[k]);
-    if (show !== 'magnitude') m = Math.max(m, Math.abs(s.re[k]), Math.abs(s.im[k]));
-  }
-  return m;
-}
-
-function comparison(peak: Peak, theory: { frequency: number; label: string }, duration: number): string {
-  const relative = (peak.frequency - theory.frequency) / theory.frequency;
-  const percent = `${relative >= 0 ? '+' : '−'}${Math.abs(100 * relative).toFixed(2)}%`;
-  return `strongest peak ${fixed(peak.frequency, frequencyDecimals(duration))} vs ${theory.label}: ${percent}`;
 }

@@ -19,7 +19,10 @@ export function axisTicks(kind: YScaleKind, domain: Domain, count: number): Tick
   const big = Math.max(Math.abs(lo), Math.abs(hi));
   if (kind === 'linear' || big < 10) {
     const scale = scaleLinear().domain([lo, hi]);
-    return { values: scale.ticks(count), format: scale.tickFormat(count) };
+    const values = scale.ticks(count);
+    const largest = Math.max(...values.map(Math.abs));
+    const scientific = largest >= 1e5 || (largest > 0 && largest < 1e-3);
+    return { values, format: scientific ? scientificFormat(values) : scale.tickFormat(count) };
   }
   const decades = Math.floor(Math.log10(big));
   for (let stride = 1; ; stride++) {
@@ -39,11 +42,28 @@ function powersOfTen(lo: number, hi: number, decades: number, stride: number): n
 
 const SUPERSCRIPT = '⁰¹²³⁴⁵⁶⁷⁸⁹';
 
+/**
+ * Labels m×10ⁿ sharing the exponent of the largest tick, with the decimals
+ * the step needs, so 2e9, 4e9 read 2×10⁹, 4×10⁹ and fit beside the axis.
+ */
+export function scientificFormat(values: readonly number[]): (value: number) => string {
+  const largest = Math.max(...values.map(Math.abs));
+  const exponent = Math.floor(Math.log10(largest));
+  const step = values.length > 1 ? Math.abs(values[1] - values[0]) : largest;
+  const digits = Math.max(0, Math.min(6, exponent - Math.floor(Math.log10(step) + 1e-9)));
+  const power = `10${superscript(exponent)}`;
+  return (value) => (value === 0 ? '0' : `${(value / 10 ** exponent).toFixed(digits).replace('-', '−')}×${power}`);
+}
+
+function superscript(n: number): string {
+  return String(n).replace(/\d/g, (d) => SUPERSCRIPT[Number(d)]).replace('-', '⁻');
+}
+
 /** 0, ±1, ±10, ±100, ±1000, then ±10⁴ … with a true minus sign. */
 export function formatPower(value: number): string {
   if (value === 0) return '0';
   const sign = value < 0 ? '−' : '';
   const exponent = Math.round(Math.log10(Math.abs(value)));
   if (exponent < 4) return sign + String(Math.abs(value));
-  return `${sign}10${String(exponent).replace(/\d/g, (d) => SUPERSCRIPT[Number(d)])}`;
+  return `${sign}10${superscript(exponent)}`;
 }

@@ -31,33 +31,48 @@ export interface AxesState {
   t1: number;
 }
 
-/** Draws both axes and the grid of a time plot on its frame canvas (context scaled to CSS pixels). */
-export function drawTimeAxes(ctx: Context, state: AxesState, theme: Theme, width: number, height: number): void {
-  const { box, kind, domain, inset, t0, t1 } = state;
+/** The grid and the y axis, on the frame canvas (context scaled to CSS pixels); redrawn only when the y range changes. */
+export function drawTimeYAxis(ctx: Context, state: AxesState, theme: Theme, width: number, height: number): void {
+  const { box, kind, domain, inset } = state;
   ctx.clearRect(0, 0, width, height);
   const y = yScale(kind, domain, [box.y + box.height * (1 - inset), box.y + box.height * inset]);
   drawYAxis(ctx, box, axisTicks(kind, domain, Math.max(2, Math.floor(box.height / 36))), y, theme);
+}
+
+/** The top of the band under the plot that holds the t axis, in CSS pixels. */
+export function xBandTop(box: Box): number {
+  return box.y + box.height - 1;
+}
+
+/** The t axis, on its own band canvas, redrawn as the window scrolls; the context is scaled to CSS pixels. */
+export function drawTimeXAxis(ctx: Context, state: AxesState, theme: Theme, width: number): void {
+  const { box, t0, t1 } = state;
+  const top = xBandTop(box);
+  ctx.clearRect(0, top, width, MARGIN.bottom + 1);
   const x = scaleLinear().domain([t0, t1]).range([box.x, box.x + box.width]);
   drawXAxis(ctx, box, axisTicks('linear', [t0, t1], Math.max(2, Math.floor(box.width / 90))), x, theme);
 }
 
 /**
- * A PNG-ready copy of a plot: opaque background, a legend line at the top,
- * then the frame (axes) and data canvases, all at device resolution.
+ * A PNG-ready picture of a plot at device resolution: an opaque background,
+ * a legend line at the top, then whatever `paint` draws (the layers), moved
+ * down by `top` device pixels.
  */
 export function compositePlot(
-  frame: HTMLCanvasElement,
-  data: HTMLCanvasElement,
+  width: number,
+  height: number,
   ratio: number,
   theme: Theme,
   legend: readonly { name: string; color: string }[],
+  paint: (ctx: CanvasRenderingContext2D, top: number) => void,
 ): HTMLCanvasElement {
   const band = legend.length > 0 ? 22 : 0;
+  const top = Math.round(band * ratio);
   const out = document.createElement('canvas');
-  out.width = frame.width;
-  out.height = frame.height + Math.round(band * ratio);
+  out.width = width;
+  out.height = height + top;
   const ctx = out.getContext('2d');
-  if (!ctx) return frame;
+  if (!ctx) throw new Error('this browser gave no 2D canvas context');
   ctx.fillStyle = theme.background;
   ctx.fillRect(0, 0, out.width, out.height);
   ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
@@ -72,8 +87,6 @@ export function compositePlot(
     x += 28 + ctx.measureText(name).width;
   }
   ctx.setTransform(1, 0, 0, 1, 0, 0);
-  const top = Math.round(band * ratio);
-  ctx.drawImage(frame, 0, top);
-  ctx.drawImage(data, Math.round(MARGIN.left * ratio), top + Math.round(MARGIN.top * ratio));
+  paint(ctx, top);
   return out;
 }

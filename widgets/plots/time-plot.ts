@@ -1,12 +1,13 @@
+import '../widgets.css';
 import type { Simulation } from '../core/simulation.ts';
 import type { View } from '../simulator/view.ts';
 import { MARGIN } from './axes.ts';
-import { context2d, createSurface, pixelRatio, sizeCanvas } from './canvas.ts';
+import { context2d, createSurface, pixelRatio, sizeCanvas, type Surface } from './canvas.ts';
 import { resolveTheme, watchTheme, type Theme } from './colors.ts';
 import { clampEnd, wheelColumns } from './history.ts';
 import { Legend } from './legend.ts';
 import { planSeries, type SeriesPlan } from './series.ts';
-import { compositePlot, drawTimeAxes, el, plotBox, WINDOWS } from './time-plot-parts.ts';
+import { compositePlot, drawTimeXAxis, drawTimeYAxis, el, plotBox, WINDOWS, xBandTop, type AxesState } from './time-plot-parts.ts';
 import { TimeRenderer, type UpdateResult } from './time-renderer.ts';
 import type { Domain, YScaleKind } from './y-map.ts';
 
@@ -21,7 +22,7 @@ export interface TimePlotOptions {
   domain?: readonly [number, number];
   /** height of the plot area in CSS pixels (default 220) */
   height?: number;
-  /** for a batch, the most trajectories drawn per series (default 100) */
+  /** for a batch, the most trajectories drawn per series (default 50) */
   trajectories?: number;
   /** an accessible name for the plot */
   label?: string;
@@ -41,8 +42,18 @@ const FALLBACK_WIDTH = 640;
 export class TimePlot implements View {
   readonly element: HTMLElement;
   private readonly stage: HTMLElement;
+  /** grid and y axis */
   private readonly frame: HTMLCanvasElement;
+  /** the live trace: the ring's tile canvases, moved like the paper's sprites */
+  private readonly tiles: HTMLElement;
+  /** a scrolled-back window, drawn from the record */
   private readonly data: HTMLCanvasElement;
+  /** the t axis band, redrawn as the window scrolls */
+  private readonly xAxis: HTMLCanvasElement;
+  private newTiles: HTMLCanvasElement[] = [];
+  private readonly tileX = new Float64Array(3).fill(NaN);
+  private yAxisKey = '';
+  private xAxisKey = '';
   private readonly legendSlot: HTMLElement;
   private readonly scrub: HTMLInputElement;
   private readonly liveButton: HTMLButtonElement;
@@ -63,6 +74,8 @@ export class TimePlot implements View {
   private playing = true;
   private lastScrub = 0;
   private dragX: number | null = null;
+  /** the theme was read while on the page (before that, only fallbacks are known) */
+  private themeLive = false;
 
   constructor(private readonly options: TimePlotOptions = {}) {
     const kind: YScaleKind = options.scale === 'log' || options.scale === 'symlog' ? 'symlog' : 'linear';
@@ -72,7 +85,7 @@ export class TimePlot implements View {
     const window = options.window ?? 10;
     if (!(window > 0) || !Number.isFinite(window)) throw new Error(`timePlot: window must be a positive number of time units, not ${window}`);
     this.cssHeight = (options.height ?? 220) + MARGIN.top + MARGIN.bottom;
-    this.renderer = new TimeRenderer(createSurface, window, kind);
+    this.renderer = new TimeRenderer((w, h) => this.makeTile(w, h), window, kind);
     if (options.domain) {
       const [lo, hi] = options.domain;
       if (!(lo < hi)) throw new Error(`timePlot: domain must be [low, high] with low < high, not [${lo}, ${hi}]`);
@@ -81,10 +94,15 @@ export class TimePlot implements View {
     }
     const label = options.label ?? 'Time plot';
     this.frame = el('canvas', 'pb-frame', { 'aria-hidden': 'true' });
-    this.data = el('canvas', 'pb-data', { 'aria-hidden': 'true' });
-    this.data.style.left = `${MARGIN.left}px`;
-    this.data.style.top = `${MARGIN.top}px`;
-    this.stage = el('div', 'pb-stage', { tabindex: '0', role: 'group', 'aria-roledescription': 'plot', 'aria-label': `${label}: drag, or use the arrow keys, to scroll back in time` }, this.frame, this.data);
+    this.tiles = el('div', 'pb-tiles', { 'aria-hidden': 'true' });
+    this.data = el('canvas', 'pb-data-layer', { 'aria-hidden': 'true' });
+    this.data.hidden = true;
+    this.xAxis = el('canvas', 'pb-xaxis', { 'aria-hidden': 'true' });
+    for (const layer of [this.tiles, this.data]) {
+      layer.style.left = `${MARGIN.left}px`;
+      layer.style.top = `${MARGIN.top}px`;
+    }
+    this.stage = el('div', 'pb-stage', { tabindex: '0', role: 'group', 'aria-roledescription': 'plot', 'aria-label': `${label}: drag, or use the arrow keys, to scroll back in time` }, this.frame, this.tiles, this.data, this.xAxis);
     this.stage.style.height = `${this.cssHeight}px`;
     this.legendSlot = el('div', 'pb-legend-slot');
     this.logButton = el('button', 'pb-button pb-small', { type: 'button', 'aria-pressed': String(kind === 'symlog'), title: 'Symmetric log scale: 20 ln(1 + |y|) sgn y' }, 'log y');
@@ -124,7 +142,7 @@ export class TimePlot implements View {
 
   reset(simulation: Simulation): void {
     const columns = simulation.record.columns;
-    if (!this.simulation || this.simulation.record.columns.join() !== columns.join()) this.plan = this.makePlan(columns, simulation.count);
+    if (!this.simulation || this.simulation.record.columns.join() !== columns.join()) this.plan = this.makePlan(simulation);
     this.simulation = simulation;
     this.historyEnd = null;
     this.renderer.reset(simulation.t0);
@@ -139,7 +157,22 @@ export class TimePlot implements View {
   canvases(): { name: string; canvas: HTMLCanvasElement }[] {
     const theme = this.theme ?? resolveTheme(this.element);
     const legend = (this.plan?.groups ?? []).flatMap((g, i) => (this.visible[i] ? [{ name: g.name, color: theme.series[i % theme.series.length] }] : []));
-    return [{ name: 'time plot', canvas: compositePlot(this.frame, this.data, this.ratio, theme, legend) }];
+    const box = plotBox(this.cssWidth, this.cssHeight);
+    const r = this.ratio;
+    const canvas = compositePlot(this.frame.width, this.frame.height, r, theme, legend, (ctx, top) => {
+      ctx.drawImage(this.frame, 0, top);
+      const x = Math.round(box.x * r);
+      const y = top + Math.round(box.y * r);
+      ctx.save();
+      ctx.beginPath();
+      ctx.rect(x, y, this.data.width, this.data.height);
+      ctx.clip();
+      if (this.historyEnd === null) this.renderer.composite(ctx, x, y);
+      else ctx.drawImage(this.data, x, y);
+      ctx.restore();
+      ctx.drawImage(this.xAxis, 0, top + Math.round(xBandTop(box) * r));
+    });
+    return [{ name: 'time plot', canvas }];
   }
 
   dispose(): void {
@@ -148,10 +181,16 @@ export class TimePlot implements View {
     this.simulation = null;
   }
 
-  private makePlan(columns: readonly string[], count: number): SeriesPlan {
-    const plan = planSeries(columns, this.options.trajectories ?? 100, undefined);
-    const show = this.options.show;
-    if (show) planSeries(columns, 1, show); // throws a one-line error naming an unknown series
+  /**
+   * The legend and series of a simulation's record. A batch shows only its
+   * coordinates at first (each entry is many lines); the rest is a click away.
+   */
+  private makePlan(simulation: Simulation): SeriesPlan {
+    const { columns } = simulation.record;
+    const { count, model } = simulation;
+    const plan = planSeries(columns, this.options.trajectories ?? 50, undefined);
+    const show = this.options.show ?? (count > 1 ? model.names.slice(0, model.dof) : undefined);
+    if (this.options.show) planSeries(columns, 1, this.options.show); // throws a one-line error naming an unknown series
     this.visible = plan.groups.map((g) => !show || show.includes(g.name));
     const note = count > plan.drawn ? `${plan.drawn} of ${count} trajectories drawn` : count > 1 ? `${count} trajectories` : undefined;
     this.theme ??= resolveTheme(this.element);
@@ -184,15 +223,38 @@ export class TimePlot implements View {
   }
 
   private layout(cssWidth: number): void {
+    if (this.element.isConnected && !this.themeLive) {
+      this.themeLive = true;
+      this.theme = resolveTheme(this.element);
+    }
     this.cssWidth = cssWidth;
     this.ratio = pixelRatio();
     const box = plotBox(cssWidth, this.cssHeight);
     sizeCanvas(this.frame, cssWidth, this.cssHeight, this.ratio);
     sizeCanvas(this.data, box.width, box.height, this.ratio);
+    sizeCanvas(this.xAxis, cssWidth, this.cssHeight - xBandTop(box), this.ratio);
+    this.xAxis.style.top = `${xBandTop(box)}px`;
+    this.tiles.style.width = `${box.width}px`;
+    this.tiles.style.height = `${box.height}px`;
     const batch = (this.simulation?.count ?? 1) > 1;
     this.renderer.resize(this.data.width, this.data.height, this.ratio * (batch ? 0.7 : 1));
-    if (this.historyEnd !== null) this.historyEnd = null;
-    this.redraw();
+    this.tiles.replaceChildren(...this.newTiles);
+    this.newTiles = [];
+    this.tileX.fill(NaN);
+    this.yAxisKey = this.xAxisKey = '';
+    this.historyEnd = null;
+    if (this.themeLive) this.retheme();
+    else this.redraw();
+  }
+
+  /** A tile of the scroll ring: a canvas the page moves rather than repaints. */
+  private makeTile(width: number, height: number): Surface {
+    const canvas = createSurface(width, height) as HTMLCanvasElement;
+    canvas.style.width = `${width / this.ratio}px`;
+    canvas.style.height = `${height / this.ratio}px`;
+    canvas.style.visibility = 'hidden';
+    this.newTiles.push(canvas);
+    return canvas;
   }
 
   private redraw(): void {
@@ -205,27 +267,56 @@ export class TimePlot implements View {
   private present(result: UpdateResult, force = false): void {
     const simulation = this.simulation;
     if (!simulation) return;
-    if (this.historyEnd === null) {
+    const live = this.historyEnd === null;
+    this.tiles.style.visibility = live ? '' : 'hidden';
+    this.data.hidden = live;
+    if (live) {
       if (result !== 'none' || force) {
-        this.renderer.composite(context2d(this.data));
+        this.placeTiles();
         this.drawAxes(this.renderer.left);
       }
     } else if (result === 'rescaled' || force) this.renderHistory();
     if (!this.element.hasAttribute('data-ready')) this.element.setAttribute('data-ready', '');
     const now = typeof performance === 'undefined' ? 0 : performance.now();
-    if (force || this.historyEnd !== null || now - this.lastScrub > 250) {
+    if (force || !live || now - this.lastScrub > 250) {
       this.lastScrub = now;
       this.updateScrub();
     }
   }
 
+  /** Moves each tile canvas to its place in the live view (a transform: no repaint of its pixels). */
+  private placeTiles(): void {
+    this.renderer.place((slot, surface, x) => {
+      if (Object.is(this.tileX[slot], x)) return;
+      this.tileX[slot] = x;
+      const style = (surface as HTMLCanvasElement).style;
+      if (x !== x) style.visibility = 'hidden';
+      else {
+        style.visibility = '';
+        style.transform = `translateX(${x / this.ratio}px)`;
+      }
+    });
+  }
+
+  /** Redraws the y axis when the range changed and the t axis when the window moved. */
   private drawAxes(left: number): void {
     const r = this.renderer;
-    const ctx = context2d(this.frame);
-    ctx.setTransform(this.ratio, 0, 0, this.ratio, 0, 0);
     const theme = (this.theme ??= resolveTheme(this.element));
-    const state = { box: plotBox(this.cssWidth, this.cssHeight), kind: r.kind, domain: r.domain, inset: r.inset, t0: r.timeOf(left), t1: r.timeOf(left + r.width) };
-    drawTimeAxes(ctx, state, theme, this.cssWidth, this.cssHeight);
+    const state: AxesState = { box: plotBox(this.cssWidth, this.cssHeight), kind: r.kind, domain: r.domain, inset: r.inset, t0: r.timeOf(left), t1: r.timeOf(left + r.width) };
+    const yKey = `${r.kind} ${r.domain[0]} ${r.domain[1]} ${this.cssWidth} ${this.ratio} ${theme.text}`;
+    if (yKey !== this.yAxisKey) {
+      this.yAxisKey = yKey;
+      const ctx = context2d(this.frame);
+      ctx.setTransform(this.ratio, 0, 0, this.ratio, 0, 0);
+      drawTimeYAxis(ctx, state, theme, this.cssWidth, this.cssHeight);
+    }
+    const xKey = `${left} ${r.width} ${r.window} ${yKey}`;
+    if (xKey !== this.xAxisKey) {
+      this.xAxisKey = xKey;
+      const ctx = context2d(this.xAxis);
+      ctx.setTransform(this.ratio, 0, 0, this.ratio, 0, -xBandTop(state.box) * this.ratio);
+      drawTimeXAxis(ctx, state, theme, this.cssWidth);
+    }
   }
 
   private renderHistory(): void {
@@ -234,7 +325,9 @@ export class TimePlot implements View {
     const r = this.renderer;
     const first = simulation.record.length > 0 ? r.columnOf(simulation.record.time(0)) : 0;
     this.historyEnd = clampEnd(this.historyEnd, first, r.end, r.width);
-    r.renderWindow(context2d(this.data), simulation.record, this.historyEnd);
+    const ctx = context2d(this.data);
+    ctx.clearRect(0, 0, this.data.width, this.data.height);
+    r.renderWindow(ctx, simulation.record, this.historyEnd);
     this.drawAxes(this.historyEnd - r.width);
   }
 
@@ -308,6 +401,7 @@ export class TimePlot implements View {
 
   private retheme(): void {
     this.theme = resolveTheme(this.element);
+    this.yAxisKey = this.xAxisKey = '';
     this.plan?.groups.forEach((_, i) => this.legend?.recolor(i, this.theme!.series[i % this.theme!.series.length]));
     this.applySeries();
   }

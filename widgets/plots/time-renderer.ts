@@ -1,8 +1,8 @@
 import type { TrajectoryRecord } from '../core/record.ts';
 import { fit, grow } from './autoscale.ts';
-import type { Context, SurfaceFactory } from './canvas.ts';
-import { ColumnDecimator, strokeColumns } from './decimate.ts';
-import { ScrollBuffer, viewLeft } from './scroll-buffer.ts';
+import type { Context, Surface, SurfaceFactory } from './canvas.ts';
+import { ColumnDecimator, pendingRange, strokeColumns } from './decimate.ts';
+import { ScrollBuffer, SLOTS, viewLeft } from './scroll-buffer.ts';
 import { mapY, yMap, type Domain, type YMap, type YScaleKind } from './y-map.ts';
 
 /** What `update` did: nothing new, drew the new samples, or grew the y range and redrew everything. */
@@ -146,10 +146,16 @@ export class TimeRenderer {
     this.feed(record, Math.max(0, from - 1), record.length, this.live);
   }
 
-  /** Blits the live window onto `target` (the plot area's canvas). */
-  composite(target: Context): void {
-    target.clearRect(0, 0, this.width, this.height);
-    this.buffer?.composite(target, this.end);
+  /** Blits the live window onto `target` at (x, y); for PNGs and tests (the page moves the tiles instead). */
+  composite(target: Context, x = 0, y = 0): void {
+    this.buffer?.composite(target, this.end, x, y);
+  }
+
+  /** Calls `place(slot, x)` for each ring slot with its x in the live view (NaN: not visible). */
+  place(place: (slot: number, surface: Surface, x: number) => void): void {
+    const buffer = this.buffer;
+    if (!buffer) return;
+    for (let slot = 0; slot < SLOTS; slot++) place(slot, buffer.surface(slot), buffer.placement(slot, this.end));
   }
 
   /** The first column of the live window. */
@@ -220,23 +226,31 @@ export class TimeRenderer {
     return new ColumnDecimator(n, capacity, sink);
   }
 
+  /** Strokes the pending columns into each tile they touch: only the columns within the tile and its padding. */
   private paintLive(d: ColumnDecimator): void {
     const start = d.penX[0] === d.penX[0] ? Math.min(d.penX[0], d.columns[0]) : d.columns[0];
-    this.buffer?.paint(start, d.columns[d.count - 1], this.pad, (ctx, offset) => this.stroke(ctx, d, offset));
+    const { pad, width } = this;
+    this.buffer?.paint(start, d.columns[d.count - 1], pad, (ctx, offset) => {
+      const [i0, i1] = pendingRange(d, offset - pad, offset + width + pad);
+      // one more on each side, so the segments crossing the tile's edges are drawn
+      if (i0 < d.count) this.stroke(ctx, d, offset, i0, Math.min(d.count, i1 + 1));
+    });
   }
 
   private paintHistory(d: ColumnDecimator): void {
     if (this.historyTarget) this.stroke(this.historyTarget, d, this.historyLeft);
   }
 
-  private stroke(ctx: Context, d: ColumnDecimator, offset: number): void {
+  private stroke(ctx: Context, d: ColumnDecimator, offset: number, i0 = 0, i1 = d.count): void {
     ctx.lineWidth = this.lineWidth;
     ctx.lineJoin = 'round';
-    ctx.lineCap = 'round';
+    // Butt caps: each frame's strokes start where the last ones ended, and round
+    // caps would overlap there, leaving darker dots on translucent batch lines.
+    ctx.lineCap = 'butt';
     ctx.globalAlpha = this.alpha;
     for (let k = 0; k < d.series; k++) {
       ctx.strokeStyle = this.styles[k];
-      strokeColumns(ctx, d, k, offset);
+      strokeColumns(ctx, d, k, offset, i0, i1);
     }
     ctx.globalAlpha = 1;
   }

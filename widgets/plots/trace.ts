@@ -8,18 +8,21 @@ export interface PathSink {
 }
 
 /**
- * Where each track's line was last drawn to, in pixels, and whether its pen
- * is down (so the next sample continues the line). One slot per track, kept
- * between frames: a frame's new line starts where the last frame's ended.
+ * Per track, kept between frames so that a frame's new line starts where the
+ * last frame's ended: where the line was last drawn to (pixels), the last
+ * sample (data units, for the jump test), and whether the pen is down.
  */
 export interface Pens {
   readonly x: Float64Array;
   readonly y: Float64Array;
+  readonly u: Float64Array;
+  readonly v: Float64Array;
   readonly down: Uint8Array;
 }
 
 export function makePens(tracks: number): Pens {
-  return { x: new Float64Array(tracks), y: new Float64Array(tracks), down: new Uint8Array(tracks) };
+  const n = () => new Float64Array(tracks);
+  return { x: n(), y: n(), u: n(), v: n(), down: new Uint8Array(tracks) };
 }
 
 /** Lift every pen: the next sample of each track starts a new line (after a gap or a redraw). */
@@ -27,18 +30,20 @@ export function liftPens(pens: Pens): void {
   pens.down.fill(0);
 }
 
-/** How finely and how far a line is drawn, in pixels. */
+/** How finely a line is drawn, and what counts as a jump of the state. */
 export interface Stroke {
-  /** samples closer than this to the last drawn point are skipped (they would not show) */
+  /** samples closer than this to the last drawn point (pixels) are skipped: they would not show */
   minStep: number;
-  /** a step longer than this is a jump of the state, drawn as a break in the line */
-  jump: number;
+  /** a step between samples longer than this in x or in y (data units) is a jump, drawn as a break in the line */
+  jumpX: number;
+  jumpY: number;
 }
 
 /**
  * Traces track k through rows [r0, r1) of row-major `data` (`width` values
  * a row; the track's x in column cx, y in cy) into `sink`, continuing from
- * its pen. The line breaks at a non-finite sample or a jump; nothing is
+ * its pen. The line breaks at a non-finite sample or a jump (tested in data
+ * units, so a symlog axis's stretch near zero is no jump); nothing is
  * allocated, so this is the loop a batch of 1000 trajectories runs each frame.
  */
 export function traceRows(
@@ -56,27 +61,33 @@ export function traceRows(
   stroke: Stroke,
 ): void {
   const min2 = stroke.minStep * stroke.minStep;
-  const jump2 = stroke.jump * stroke.jump;
+  const { jumpX, jumpY } = stroke;
   let px = pens.x[k];
   let py = pens.y[k];
+  let u = pens.u[k];
+  let v = pens.v[k];
   let down = pens.down[k] === 1;
   if (down) sink.moveTo(px, py);
   for (let r = r0; r < r1; r++) {
     const at = r * width;
-    const x = toPixel(mx, data[at + cx]);
-    const y = toPixel(my, data[at + cy]);
+    const du = data[at + cx];
+    const dv = data[at + cy];
+    const x = toPixel(mx, du);
+    const y = toPixel(my, dv);
     if (!Number.isFinite(x) || !Number.isFinite(y)) {
       down = false;
       continue;
     }
+    const jumped = Math.abs(du - u) > jumpX || Math.abs(dv - v) > jumpY;
+    u = du;
+    v = dv;
     const dx = x - px;
     const dy = y - py;
-    const d2 = dx * dx + dy * dy;
-    if (!down || d2 > jump2) {
+    if (!down || jumped) {
       sink.moveTo(x, y);
       // a zero-length segment, so that a lone sample still shows with round caps
       sink.lineTo(x, y);
-    } else if (d2 >= min2) {
+    } else if (dx * dx + dy * dy >= min2) {
       sink.lineTo(x, y);
     } else {
       continue;
@@ -87,6 +98,8 @@ export function traceRows(
   }
   pens.x[k] = px;
   pens.y[k] = py;
+  pens.u[k] = u;
+  pens.v[k] = v;
   pens.down[k] = down ? 1 : 0;
 }
 

@@ -1,0 +1,109 @@
+/**
+ * The first load ships neither the editor (CodeMirror) nor the parser
+ * (acorn): the editor comes on the first interaction with a cell or when the
+ * browser is idle, the parser on the first Run of changed source. Reports
+ * the JavaScript bytes (gzip) at each stage as test diagnostics.
+ */
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { after, before, test } from 'node:test';
+import { gzipSync } from 'node:zlib';
+import { cell, cellsReady, openSite, typeIntoCell, waitForOutput, watchPage } from './fixture.mjs';
+import { DIST } from './server.mjs';
+
+/** @type {Awaited<ReturnType<typeof openSite>>} */
+let site;
+before(async () => (site = await openSite()));
+after(() => site?.close());
+
+const EDITOR_CHUNK = /\/_astro\/editor\.[\w-]+\.js$/;
+const PARSER_CHUNK = /\/_astro\/parser\.[\w-]+\.js$/;
+/** Strings only CodeMirror's or acorn's code contains, to catch them in any chunk. */
+const EDITOR_MARKERS = ['cm-content', 'cm-scroller'];
+const PARSER_MARKERS = ['allowHashBang', 'Unterminated string constant'];
+
+const scripts = (requests) => requests.filter((url) => url.endsWith('.js'));
+const fileOf = (url) => join(DIST, new URL(url).pathname);
+const gzipBytes = (urls) => urls.reduce((sum, url) => sum + gzipSync(readFileSync(fileOf(url)), { level: 9 }).length, 0);
+const containsAny = (url, markers) => {
+  const text = readFileSync(fileOf(url), 'utf8');
+  return markers.some((marker) => text.includes(marker));
+};
+
+test('first load fetches no editor or parser code; focus loads the editor, Run of an edit the parser', async (t) => {
+  const page = await site.context.newPage();
+  const { problems, requests } = watchPage(page);
+  await page.goto(`${site.origin}/introduction/`);
+  await cellsReady(page);
+  await page.waitForTimeout(300);
+
+  const initial = scripts(requests);
+  assert.ok(initial.length > 0);
+  assert.deepEqual(initial.filter((url) => EDITOR_CHUNK.test(url) || PARSER_CHUNK.test(url)), []);
+  assert.deepEqual(initial.filter((url) => containsAny(url, [...EDITOR_MARKERS, ...PARSER_MARKERS])), []);
+  const initialBytes = gzipBytes(initial);
+  t.diagnostic(`initial JS: ${initial.length} file(s), ${initialBytes} B gzip`);
+
+  // The editor replaces the static code without moving anything or changing colours.
+  const box = cell(page, 'phase').locator('.cell-box');
+  const heightBefore = (await box.boundingBox())?.height ?? 0;
+  const tokens = () =>
+    cell(page, 'phase').locator('.cell-editor').evaluate((host) =>
+      [...host.querySelectorAll('[class*="tok-"]')].map((span) => `${span.className}:${span.textContent}`),
+    );
+  const tokensBefore = await tokens();
+  assert.ok(tokensBefore.includes('tok-keyword:while'));
+  await cell(page, 'phase').locator('pre.cell-code').focus();
+  await cell(page, 'phase').locator('.cm-editor').waitFor();
+  const heightAfter = (await box.boundingBox())?.height ?? 0;
+  assert.ok(Math.abs(heightAfter - heightBefore) <= 1, `cell height ${heightBefore} → ${heightAfter}`);
+  assert.deepEqual(await tokens(), tokensBefore);
+  assert.ok(await cell(page, 'phase').locator('.cm-content').evaluate((node) => node.contains(document.activeElement)));
+
+  const withEditor = scripts(requests);
+  const editorChunks = withEditor.filter((url) => EDITOR_CHUNK.test(url));
+  assert.equal(editorChunks.length, 1);
+  assert.ok(containsAny(editorChunks[0], EDITOR_MARKERS));
+  assert.deepEqual(withEditor.filter((url) => PARSER_CHUNK.test(url)), []);
+  t.diagnostic(`after the editor loads: ${withEditor.length} file(s), ${gzipBytes(withEditor)} B gzip`);
+
+  // Running the unchanged original needs no parser: the build parsed it.
+  await page.keyboard.press('Shift+Enter');
+  await page.waitForTimeout(200);
+  assert.deepEqual(scripts(requests).filter((url) => PARSER_CHUNK.test(url)), []);
+
+  await typeIntoCell(page, 'omega', 'omega = 5');
+  await waitForOutput(page, 'omega', (text) => text === 'omega = 5');
+  const withParser = scripts(requests);
+  const parserChunks = withParser.filter((url) => PARSER_CHUNK.test(url));
+  assert.equal(parserChunks.length, 1);
+  assert.ok(containsAny(parserChunks[0], PARSER_MARKERS));
+  t.diagnostic(`after the parser loads: ${withParser.length} file(s), ${gzipBytes(withParser)} B gzip`);
+
+  assert.deepEqual(problems, []);
+  await page.evaluate(() => localStorage.clear());
+  await page.close();
+});
+
+test('when the reader leaves the page alone, the editors load once the browser is idle', async () => {
+  const page = await site.context.newPage();
+  const { problems, requests } = watchPage(page);
+  await page.goto(`${site.origin}/introduction/`);
+  await cellsReady(page);
+  const cells = await page.locator('[data-cell]').count();
+  await page.waitForFunction((count) => document.querySelectorAll('[data-cell] .cm-editor').length === count, cells, { timeout: 15_000 });
+  assert.equal(scripts(requests).filter((url) => EDITOR_CHUNK.test(url)).length, 1);
+  assert.deepEqual(scripts(requests).filter((url) => PARSER_CHUNK.test(url)), []);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a chapter without cells loads no cell code', async () => {
+  const page = await site.context.newPage();
+  const { requests } = watchPage(page);
+  await page.goto(`${site.origin}/`);
+  await page.waitForLoadState('load');
+  assert.deepEqual(scripts(requests), []);
+  await page.close();
+});

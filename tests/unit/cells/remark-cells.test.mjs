@@ -1,0 +1,64 @@
+import { describe, expect, test } from 'vitest';
+import { assignCellIds, hashSource, remarkCells } from '../../../src/lib/remark-cells.mjs';
+
+/** Runs the plugin on a hand-made tree of fenced code blocks. */
+function transform(fences) {
+  const tree = {
+    type: 'root',
+    children: fences.map(([meta, value]) => ({ type: 'code', lang: 'js', meta, value })),
+  };
+  const file = { data: {}, messages: [], message(text) { this.messages.push(text); } };
+  remarkCells()(tree, file);
+  return { tree, file };
+}
+
+describe('remarkCells()', () => {
+  test('turns ```js cell fences into figures carrying id, hash and the build-time parse', () => {
+    const { tree, file } = transform([['cell', 'omega = 10'], ['cell', 'period = 2 * PI / omega'], [null, 'not a cell']]);
+    const [omega, period, plain] = tree.children;
+    expect(omega.type).toBe('liveCell');
+    expect(omega.data.hName).toBe('figure');
+    expect(omega.data.hProperties).toMatchObject({ dataCell: 'omega', dataCellName: 'omega', dataCellHash: hashSource('omega = 10') });
+    expect(JSON.parse(period.data.hProperties.dataCellSpec)).toEqual({
+      name: 'period', inputs: ['PI', 'omega'], async: false, generator: false, body: [9, 23], block: false,
+    });
+    expect(plain.type).toBe('code');
+    expect(file.data.astro.frontmatter.cells).toBe(2);
+  });
+
+  test('highlights the source with the editor\'s tok-* classes and keeps its text exact', () => {
+    const { tree } = transform([['cell', '{\n  return "a";\n}\n\n']]);
+    const pre = JSON.stringify(tree.children[0].data.hChildren);
+    expect(pre).toContain('tok-keyword');
+    expect(pre).toContain('tok-string');
+    const text = [];
+    const walk = (node) => (node.type === 'text' ? text.push(node.value) : node.children?.forEach(walk));
+    const code = tree.children[0].data.hChildren[0].children[0].children[0].children[0];
+    walk(code);
+    expect(text.join('')).toBe('{\n  return "a";\n}');
+  });
+
+  test('renders a cell that does not parse, with its error, instead of failing the build', () => {
+    const { tree, file } = transform([['cell', 'x = = 1']]);
+    expect(tree.children[0].data.hProperties.dataCellBuildError).toBe('SyntaxError: Unexpected token (1:4)');
+    expect(tree.children[0].data.hProperties.dataCellSpec).toBeUndefined();
+    expect(file.messages).toHaveLength(1);
+  });
+});
+
+describe('assignCellIds(cells)', () => {
+  test('uses the name, cell-N by position for anonymous cells, and -dupN for repeats', () => {
+    expect(assignCellIds([{ name: 'a' }, { name: null }, { name: 'a' }, { name: 'cell' }])).toEqual(['a', 'cell-2', 'a-dup2', 'cell']);
+  });
+});
+
+describe('highlightJs(source)', () => {
+  test('highlights a named block cell as a block, not an object literal', async () => {
+    const { highlightJs } = await import('../../../src/lib/highlight-js.mjs');
+    const nodes = highlightJs('x = {\n  return 1;\n}');
+    const returnNode = nodes.find((node) => node.type === 'element' && node.children[0].value === 'return');
+    expect(returnNode.properties.className).toEqual(['tok-keyword']);
+    const text = nodes.map((node) => (node.type === 'text' ? node.value : node.children[0].value)).join('');
+    expect(text).toBe('x = {\n  return 1;\n}');
+  });
+});

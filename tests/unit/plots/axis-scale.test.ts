@@ -1,0 +1,50 @@
+import { describe, expect, it } from 'vitest';
+import { formatTick, makeMapping, symlogTicks, ticksFor, toPixel } from '../../../widgets/plots/axis-scale.ts';
+
+describe('axis-scale', () => {
+  it('toPixel(makeMapping("linear", domain, range), v) agrees with the d3 scale', () => {
+    const m = makeMapping('linear', [-3, 7], [400, 20]);
+    for (const v of [-3, -1.5, 0, 2, 7, 12]) expect(toPixel(m, v)).toBeCloseTo(m.scale(v), 10);
+    expect(toPixel(m, -3)).toBeCloseTo(400, 12);
+    expect(toPixel(m, 7)).toBeCloseTo(20, 12);
+  });
+
+  it('toPixel(makeMapping("symlog", domain, range, c), v) agrees with d3 scaleSymlog', () => {
+    const m = makeMapping('symlog', [-2000, 1500], [0, 640], 2);
+    for (const v of [-2000, -30, -1, 0, 0.5, 40, 1500]) expect(toPixel(m, v)).toBeCloseTo(m.scale(v), 9);
+  });
+
+  it('makeMapping(kind, [a, a], range) maps everything to the start of the range instead of dividing by zero', () => {
+    const m = makeMapping('linear', [2, 2], [10, 50]);
+    expect(toPixel(m, 2)).toBe(10);
+    expect(toPixel(m, 5)).toBe(10);
+  });
+
+  it('symlogTicks(lo, hi, count, c) gives 0 and ±c·10^k, symmetric and within the domain', () => {
+    expect(symlogTicks(-150, 150, 10)).toEqual([-100, -10, -1, 0, 1, 10, 100]);
+    expect(symlogTicks(0, 5000, 10)).toEqual([0, 1, 10, 100, 1000]);
+    expect(symlogTicks(-0.5, 0.5, 10)).toEqual([0]);
+  });
+
+  it('symlogTicks(lo, hi, count) thins decades to about count ticks', () => {
+    const ticks = symlogTicks(-1e6, 1e6, 7);
+    expect(ticks.length).toBeLessThanOrEqual(7);
+    expect(ticks).toContain(0);
+    expect(ticks.map((t) => -t || 0).sort((a, b) => a - b)).toEqual(ticks);
+  });
+
+  it('formatTick(v) is a plain decimal for ordinary sizes and a power of ten otherwise', () => {
+    expect(formatTick(0)).toBe('0');
+    expect(formatTick(1000)).toBe('1000');
+    expect(formatTick(0.25)).toBe('0.25');
+    expect(formatTick(1e6)).toBe('10⁶');
+    expect(formatTick(-1e6)).toBe('−10⁶');
+    expect(formatTick(2.5e-5)).toBe('2.5×10⁻⁵');
+  });
+
+  it('ticksFor(m, count) labels linear ticks with d3’s format and a true minus sign', () => {
+    const { values, labels } = ticksFor(makeMapping('linear', [-1, 1], [0, 100]), 5);
+    expect(values).toEqual([-1, -0.5, 0, 0.5, 1]);
+    expect(labels).toEqual(['−1.0', '−0.5', '0.0', '0.5', '1.0']);
+  });
+});

@@ -1,0 +1,64 @@
+import { describe, expect, it } from 'vitest';
+import { axisTitle, columnsOf, defaultBodies, phasePairs, toExtent, tracksOf } from '../../../widgets/plots/plane-columns.ts';
+
+const single = ['t', 'q0', 'q1', 'q2', 'q3', 'p0', 'p1', 'p2', 'p3', 'H'];
+const batch = ['t', 'q0[0]', 'q1[0]', 'p0[0]', 'p1[0]', 'q0[1]', 'q1[1]', 'p0[1]', 'p1[1]', 'H[0]', 'H[1]'];
+
+describe('plane-columns', () => {
+  it('columnsOf(columns, name, 1) is the column of that name', () => {
+    expect(columnsOf(single, 'q2', 1)).toEqual([3]);
+    expect(columnsOf(single, 'H', 1)).toEqual([9]);
+  });
+
+  it('columnsOf(columns, name, M) is name[j] for every trajectory j, or the one exact column', () => {
+    expect(columnsOf(batch, 'q1', 2)).toEqual([2, 6]);
+    expect(columnsOf(batch, 'p0[1]', 2)).toEqual([7]);
+  });
+
+  it('columnsOf(columns, name, M) names the series it has when the name is unknown', () => {
+    expect(() => columnsOf(single, 'x', 1)).toThrow(/no series named “x”; the record has q0, q1/);
+    expect(() => columnsOf(single, 't', 1)).toThrow(/no series/);
+  });
+
+  it('tracksOf(columns, pair, M, group) pairs x and y trajectory by trajectory', () => {
+    expect(tracksOf(batch, ['q0', 'q1'], 2, (j) => 10 + j)).toEqual([
+      { x: 1, y: 2, group: 10 },
+      { x: 5, y: 6, group: 11 },
+    ]);
+    expect(() => tracksOf(batch, ['q0', 'p0[1]'], 2, () => 0)).toThrow(/as many of each/);
+  });
+
+  it('defaultBodies(names, dof) pairs consecutive coordinates and refuses one coordinate', () => {
+    expect(defaultBodies(['q0', 'q1', 'q2', 'q3', 'p0', 'p1', 'p2', 'p3'], 4)).toEqual([
+      ['q0', 'q1'],
+      ['q2', 'q3'],
+    ]);
+    expect(defaultBodies(['a', 'b', 'c', 'pa', 'pb', 'pc'], 3)).toEqual([['a', 'b']]);
+    expect(() => defaultBodies(['q', 'p'], 1)).toThrow(/one coordinate/);
+  });
+
+  it('phasePairs(names, dof, chosen) is (q_i, p_i) for all or the chosen i, or explicit pairs', () => {
+    const names = ['q0', 'q1', 'p0', 'p1'];
+    expect(phasePairs(names, 2)).toEqual([
+      ['q0', 'p0'],
+      ['q1', 'p1'],
+    ]);
+    expect(phasePairs(names, 2, [1, ['q0', 'H']])).toEqual([
+      ['q1', 'p1'],
+      ['q0', 'H'],
+    ]);
+    expect(() => phasePairs(names, 2, [2])).toThrow(/0 … 1/);
+  });
+
+  it('axisTitle(names, generic) is the one name, or the generic name with the list', () => {
+    expect(axisTitle(['q0', 'q0'], 'x')).toBe('q0');
+    expect(axisTitle(['q0', 'q2'], 'x')).toBe('x (q0, q2)');
+    expect(axisTitle(['q0', 'q1', 'q2', 'q3'], 'q')).toBe('q (q0, q1, …)');
+  });
+
+  it('toExtent(option, what) checks the bounds', () => {
+    expect(toExtent({ x: [-1, 1], y: [0, 2] }, 'extent')).toEqual({ x0: -1, x1: 1, y0: 0, y1: 2 });
+    expect(toExtent(undefined, 'extent')).toBeUndefined();
+    expect(() => toExtent({ x: [1, 1], y: [0, 2] }, 'limit')).toThrow(/limit must be/);
+  });
+});

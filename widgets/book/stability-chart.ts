@@ -1,0 +1,147 @@
+import { makeMapping } from '../plots/axis-scale.ts';
+import { pixelRatio, sizeCanvas } from '../plots/canvas.ts';
+import { drawAxes, MARGIN } from '../plots/draw-axes.ts';
+import { readTheme } from '../plots/view-theme.ts';
+import type { StabilityRequest } from './stability-worker.ts';
+
+export interface StabilityChartOptions {
+  /** H of a linear, periodically driven 1-DOF system, as a math expression */
+  hamiltonian: string;
+  params: Record<string, number>;
+  /** horizontal axis: a parameter and its range, e.g. {param: 'gamma', from: 15, to: 25} */
+  x: { param: string; from: number; to: number; label?: string; count?: number };
+  y: { param: string; from: number; to: number; label?: string; count?: number };
+  /** the parameter setting the drive frequency (period 2π over it) */
+  frequencyParam: string;
+  /** curves drawn over the chart: each maps a y value to an x value (e.g. the first-order boundary) */
+  boundaries?: ((y: number) => number)[];
+  /** called with {[x.param]: …, [y.param]: …} when the reader clicks the chart */
+  onSelect?: (values: Record<string, number>) => void;
+  stepsPerPeriod?: number;
+  height?: number;
+}
+
+/** Warm ramp for growth rates, yellow (slow) to red (fast); readable on light and dark backgrounds. */
+const heat = (v: number) => `hsl(${48 - 46 * v}, 88%, ${64 - 20 * v}%)`;
+
+const axis = (a: { from: number; to: number; count?: number }, n: number) =>
+  Array.from({ length: a.count ?? n }, (_, i) => a.from + ((a.to - a.from) * i) / ((a.count ?? n) - 1));
+
+/**
+ * The stability chart of parametric resonance: Floquet growth rates over two
+ * parameters, computed in a worker with a progress bar, the theoretical
+ * boundary drawn over it, and a click that hands the clicked parameters to
+ * the chapter (which sets them in its simulator).
+ */
+export function stabilityChart(options: StabilityChartOptions): HTMLElement {
+  const { x, y, boundaries = [], height = 300 } = options;
+  const root = document.createElement('figure');
+  root.className = 'pb-stability';
+  root.dataset.widget = 'stability-chart';
+  const canvas = document.createElement('canvas');
+  canvas.style.cursor = 'crosshair';
+  canvas.setAttribute('role', 'img');
+  canvas.setAttribute('aria-label', `Stability chart over ${x.param} and ${y.param}; click to choose a point`);
+  const status = document.createElement('figcaption');
+  const progress = document.createElement('progress');
+  progress.max = 1;
+  progress.value = 0;
+  status.append(progress, ' computing Floquet multipliers…');
+  root.append(canvas, status);
+
+  const xs = axis(x, 120);
+  const ys = axis(y, 60);
+  let rates: Float64Array | null = null;
+  let chosen: [number, number] | null = [options.params[x.param], options.params[y.param]];
+
+  const draw = () => {
+    const width = Math.max(280, root.clientWidth || 640);
+    const dpr = pixelRatio();
+    sizeCanvas(canvas, width, height, dpr);
+    const g = canvas.getContext('2d')!;
+    g.setTransform(dpr, 0, 0, dpr, 0, 0);
+    const theme = readTheme(root);
+    g.fillStyle = theme.bg;
+    g.fillRect(0, 0, width, height);
+    const rect = { left: MARGIN.left, top: MARGIN.top, width: width - MARGIN.left - MARGIN.right, height: height - MARGIN.top - MARGIN.bottom };
+    const mx = makeMapping('linear', [x.from, x.to], [rect.left, rect.left + rect.width]);
+    const my = makeMapping('linear', [y.from, y.to], [rect.top + rect.height, rect.top]);
+    if (rates) {
+      let top = 0;
+      for (const r of rates) top = Math.max(top, r);
+      const cw = rect.width / xs.length;
+      const ch = rect.height / ys.length;
+      for (let j = 0; j < ys.length; j++) {
+        for (let i = 0; i < xs.length; i++) {
+          const r = rates[j * xs.length + i];
+          g.fillStyle = r > 0 ? heat(Math.sqrt(r / (top || 1))) : theme.bg;
+          g.fillRect(rect.left + i * cw, rect.top + rect.height - (j + 1) * ch, cw + 0.5, ch + 0.5);
+        }
+      }
+    }
+    g.strokeStyle = theme.fg;
+    g.lineWidth = 1.5;
+    g.setLineDash([5, 4]);
+    for (const boundary of boundaries) {
+      g.beginPath();
+      ys.forEach((v, j) => (j ? g.lineTo : g.moveTo).call(g, mx.scale(boundary(v)), my.scale(v)));
+      g.stroke();
+    }
+    g.setLineDash([]);
+    if (chosen) {
+      g.strokeStyle = theme.accent;
+      g.lineWidth = 2;
+      g.beginPath();
+      g.arc(mx.scale(chosen[0]), my.scale(chosen[1]), 6, 0, 2 * Math.PI);
+      g.stroke();
+    }
+    drawAxes(g, rect, mx, my, theme, { xLabel: x.label ?? x.param, yLabel: y.label ?? y.param }, dpr);
+    canvas.onclick = (event) => {
+      const box = canvas.getBoundingClientRect();
+      const vx = mx.scale.invert(event.clientX - box.left);
+      const vy = my.scale.invert(event.clientY - box.top);
+      if (vx < x.from || vx > x.to || vy < y.from || vy > y.to) return;
+      chosen = [vx, vy];
+      draw();
+      options.onSelect?.({ [x.param]: vx, [y.param]: vy });
+    };
+  };
+
+  const worker = new Worker(new URL('./stability-worker.ts', import.meta.url), { type: 'module' });
+  const request: StabilityRequest = {
+    hamiltonian: options.hamiltonian,
+    params: options.params,
+    x: { param: x.param, values: xs },
+    y: { param: y.param, values: ys },
+    frequencyParam: options.frequencyParam,
+    stepsPerPeriod: options.stepsPerPeriod ?? 200,
+  };
+  worker.onmessage = (event: MessageEvent<{ progress?: number; rates?: Float64Array; error?: string }>) => {
+    const m = event.data;
+    if (m.progress !== undefined) progress.value = m.progress;
+    if (m.error) {
+      status.textContent = `Could not compute the chart: ${m.error}`;
+      status.className = 'pb-error';
+      worker.terminate();
+    }
+    if (m.rates) {
+      rates = m.rates;
+      const unstable = rates.filter((r) => r > 0).length;
+      status.textContent = `Shaded: unstable (growth rate by colour), ${unstable} of ${rates.length} points. Dashed: the first-order boundary. Click to choose ${x.param} and ${y.param}.`;
+      root.dataset.unstable = String(unstable);
+      worker.terminate();
+      draw();
+      root.dataset.ready = '';
+    }
+  };
+  worker.postMessage(request);
+  requestAnimationFrame(draw);
+  // The chart is part of a cell's output: if the cell re-runs, this instance is discarded with its worker.
+  new MutationObserver((_, observer) => {
+    if (!root.isConnected && root.dataset.ready === undefined) {
+      worker.terminate();
+      observer.disconnect();
+    }
+  }).observe(document.body, { childList: true, subtree: true });
+  return root;
+}

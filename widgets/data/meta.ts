@@ -1,0 +1,37 @@
+import type { ExportMeta } from '../core/json.ts';
+import type { Simulation } from '../core/simulation.ts';
+import { VERSION } from '../core/version.ts';
+
+/** The integration method of every simulation: the classical Runge–Kutta 3/8 rule. */
+export const METHOD = 'rk38';
+
+/**
+ * The metadata of an export of a simulation's record, with the keys and key
+ * order of `phasebook simulate` (widgets/cli/simulate.ts): the source of H,
+ * parameters, dof, dt, method, sampling interval, t0, the initial state, the
+ * route the canonical equations took, the state and derived names and the
+ * version; then, only when they apply, the batch size (`count`) and the rows
+ * the record had dropped (`dropped`).
+ */
+export function exportMeta(simulation: Simulation): ExportMeta {
+  const { model } = simulation;
+  const params: Record<string, number> = {};
+  model.paramNames.forEach((name, i) => (params[name] = model.params[i]));
+  const meta: ExportMeta = {
+    hamiltonian: model.source,
+    params,
+    dof: model.dof,
+    dt: simulation.dt,
+    method: METHOD,
+    every: simulation.every,
+    t0: simulation.t0,
+    initial: Array.from(simulation.initial),
+    route: model.route,
+    names: [...model.names],
+    derived: simulation.derived.map((d) => d.name),
+    version: VERSION,
+  };
+  if (simulation.count > 1) meta.count = simulation.count;
+  if (simulation.record.dropped > 0) meta.dropped = simulation.record.dropped;
+  return meta;
+}
