@@ -24,8 +24,15 @@ function lazyChunk(id) {
   return undefined;
 }
 
+/**
+ * PHASEBOOK_OUT_DIR lets several builds run side by side (each with its own
+ * output and caches) without wiping each other's dist/.
+ */
+const outDir = process.env.PHASEBOOK_OUT_DIR;
+
 export default defineConfig({
   site: 'http://localhost:4321',
+  ...(outDir ? { outDir } : {}),
   output: 'static',
   trailingSlash: 'always',
   build: { format: 'directory' },
@@ -40,6 +47,9 @@ export default defineConfig({
   },
   integrations: [mdx()],
   vite: {
+    ...(outDir ? { cacheDir: `${outDir}/.vite-cache` } : {}),
+    // Workers (the stability chart's) load mathjs lazily, so they need ES modules to split chunks.
+    worker: { format: 'es' },
     build: {
       rollupOptions: { output: { manualChunks: lazyChunk } },
     },

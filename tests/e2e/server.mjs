@@ -10,7 +10,7 @@ import { stat } from 'node:fs/promises';
 import { extname, join, normalize, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
-export const DIST = fileURLToPath(new URL('../../dist/', import.meta.url));
+export const DIST = process.env.PHASEBOOK_OUT_DIR ?? fileURLToPath(new URL('../../dist/', import.meta.url));
 
 const MIME_TYPES = {
   '.html': 'text/html; charset=utf-8',

@@ -1,3 +1,4 @@
+import './book.css';
 import { makeMapping } from '../plots/axis-scale.ts';
 import { pixelRatio, sizeCanvas } from '../plots/canvas.ts';
 import { drawAxes, MARGIN } from '../plots/draw-axes.ts';

@@ -1,3 +1,4 @@
+import './book.css';
 import type { Model } from '../core/types.ts';
 
 type Katex = typeof import('katex');

@@ -24,7 +24,7 @@ export interface AxisStyle {
 }
 
 /** Room left of the plot area for y tick labels, and below it for t labels. */
-export const MARGIN = { left: 56, right: 10, top: 8, bottom: 24 };
+export const MARGIN = { left: 56, right: 16, top: 8, bottom: 24 };
 
 /** Labels closer than this (CSS pixels) to a kept one are dropped. */
 export const MIN_LABEL_GAP = 13;
@@ -66,37 +66,38 @@ export function drawYAxis(ctx: Context, box: Box, ticks: Ticks, position: (v: nu
   frameLine(ctx, style, box.x + 0.5, box.y, box.x + 0.5, box.y + box.height);
 }
 
-/** Tick marks and labels under the plot area for t ticks at `position(v)`, and the axis name. */
-export function drawXAxis(
-  ctx: Context,
-  box: Box,
-  ticks: Ticks,
-  position: (v: number) => number,
-  style: AxisStyle,
-  name = 't',
-): void {
-  const bottom = box.y + box.height;
+/**
+ * Tick marks and labels of a horizontal axis whose line is at y = `top`, for
+ * ticks at x = `position(v)`; labels may run past the ends (the canvas clips).
+ */
+export function drawXTicks(ctx: Context, top: number, values: readonly number[], format: (v: number) => string, position: (v: number) => number, style: AxisStyle): void {
   ctx.font = style.font;
   ctx.textAlign = 'center';
   ctx.textBaseline = 'top';
   ctx.lineWidth = 1;
   ctx.strokeStyle = style.axis;
   ctx.fillStyle = style.text;
+  ctx.globalAlpha = 0.8;
   ctx.beginPath();
-  for (const v of ticks.values) {
+  for (const v of values) {
     const x = Math.round(position(v)) + 0.5;
-    if (x < box.x - 0.5 || x > box.x + box.width + 0.5) continue;
-    ctx.moveTo(x, bottom);
-    ctx.lineTo(x, bottom + 4);
+    ctx.moveTo(x, top);
+    ctx.lineTo(x, top + 4);
   }
   ctx.stroke();
-  ticks.values.forEach((v) => {
-    const x = Math.round(position(v)) + 0.5;
-    if (x >= box.x - 0.5 && x <= box.x + box.width - 14) ctx.fillText(ticks.format(v), x, bottom + 6);
-  });
-  ctx.textAlign = 'right';
-  ctx.fillText(name, box.x + box.width, bottom + 6);
+  ctx.globalAlpha = 1;
+  for (const v of values) ctx.fillText(format(v), Math.round(position(v)) + 0.5, top + 6);
+}
+
+/** The bottom axis line of a plot area and the axis name just beyond its right end. */
+export function drawXFrame(ctx: Context, box: Box, style: AxisStyle, name: string): void {
+  const bottom = box.y + box.height;
   frameLine(ctx, style, box.x, bottom + 0.5, box.x + box.width, bottom + 0.5);
+  ctx.font = style.font;
+  ctx.fillStyle = style.text;
+  ctx.textAlign = 'left';
+  ctx.textBaseline = 'middle';
+  ctx.fillText(name, box.x + box.width + 4, bottom);
 }
 
 function frameLine(ctx: Context, style: AxisStyle, x0: number, y0: number, x1: number, y1: number): void {

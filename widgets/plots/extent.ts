@@ -72,7 +72,12 @@ export function padInterval(lo: number, hi: number, headroom: number, kind: Axis
   return [a, b];
 }
 
-/** The padded union of `current` (may be empty) and `data`: what an auto-extent grows to. */
+/** The smallest extent holding both (either may be empty). */
+export function union(a: Extent, b: Extent): Extent {
+  return { x0: Math.min(a.x0, b.x0), x1: Math.max(a.x1, b.x1), y0: Math.min(a.y0, b.y0), y1: Math.max(a.y1, b.y1) };
+}
+
+/** The padded union of `current` (may be empty) and `data`. */
 export function growExtent(
   current: Extent,
   data: Extent,

@@ -1,6 +1,6 @@
 import { makeMapping, type Mapping } from './axis-scale.ts';
 import { MARGIN, type Rect } from './draw-axes.ts';
-import { contains, emptyExtent, fitEqualAspect, growExtent, includePoint, isEmpty, stretchGrowth, transform, type AxisKind, type Extent } from './extent.ts';
+import { contains, emptyExtent, fitEqualAspect, growExtent, includePoint, isEmpty, stretchGrowth, transform, union, type AxisKind, type Extent } from './extent.ts';
 import { makePens, type Pens } from './trace.ts';
 
 /** One line on a plane plot: the record columns of its x and y, and its colour group. */
@@ -130,7 +130,8 @@ export function growPanel(panel: Panel): boolean {
   includePoint(data, fresh.x1, fresh.y1);
   // `fitted` too: the aspect fit of `shown` can round a hair inside it.
   if (!isEmpty(panel.fitted) && (contains(panel.shown, fresh) || contains(panel.fitted, fresh))) return false;
-  const grown = growExtent(data, data, HEADROOM, spec.xKind, spec.yKind, spec.constant);
+  // the padded data, never less than before (what is drawn stays in view), then stretched on the side that grew
+  const grown = union(panel.fitted, growExtent(data, data, HEADROOM, spec.xKind, spec.yKind, spec.constant));
   panel.fitted = stretchGrowth(panel.fitted, grown, GROWTH, spec.xKind, spec.yKind, spec.constant);
   if (spec.limit) clampTo(panel.fitted, spec.limit);
   return true;

@@ -1,8 +1,9 @@
 import type { Simulation } from '../core/simulation.ts';
 import { unseen, type View } from '../simulator/view.ts';
-import { toPixel, type Mapping } from './axis-scale.ts';
+import type { Mapping } from './axis-scale.ts';
 import { drawAxes, drawLegend } from './draw-axes.ts';
-import { includeRows, liftPens, traceRows, type Stroke } from './trace.ts';
+import { defaultLook, drawDots, fadeLayer, rescaleImage, strokeRows, type LineStyle } from './plane-draw.ts';
+import { includeRows, liftPens } from './trace.ts';
 import { ageBuckets, Fader, FADE_FRAMES, parseTrail, type TrailOption } from './trail.ts';
 import { gridColumns, growPanel, makePanel, panelRect, placePanel, settlePanel, type Panel, type PanelSpec } from './plane-panels.ts';
 import { ViewFrame, type Layer } from './view-frame.ts';
@@ -39,8 +40,6 @@ export interface PlaneDefinition extends PlaneStyle {
 const BUCKETS = 24;
 /** Frames without growth after which an auto extent left loose by growing is tightened. */
 const SETTLE_FRAMES = 45;
-/** Samples with the pen down closer than this (CSS px) to the last drawn point are skipped. */
-const MIN_STEP = 0.5;
 
 /**
  * The engine of the plane plots: tracks of record columns drawn as lines,
@@ -98,7 +97,9 @@ export class PlaneView implements View {
     if (simulation !== this.simulation || record.columns !== this.columns || record.dropped + record.length < this.seen) {
       this.reset(simulation);
     }
-    if (this.frame.measure()) this.relayout();
+    // a new size or pixel ratio redraws everything from the record, new rows included
+    const redrawn = this.frame.measure();
+    if (redrawn) this.relayout();
     if (this.panels.length === 0) {
       if (this.dirty) this.compose();
       return;
@@ -116,6 +117,8 @@ export class PlaneView implements View {
       const step = this.mode.kind === 'frames' ? 1 : elapsed;
       if (grew) {
         if (this.relayout(true)) this.advance(from, to, step);
+      } else if (redrawn) {
+        this.dirty = true;
       } else if (this.quiet === SETTLE_FRAMES && this.holdsTrail() && this.panels.map(settlePanel).some(Boolean)) this.relayout();
       else this.advance(from, to, step);
     }
@@ -128,6 +131,7 @@ export class PlaneView implements View {
     this.seen = simulation.record.dropped + simulation.record.length;
     this.lastTime = simulation.record.length ? simulation.record.time(simulation.record.length - 1) : NaN;
     this.frameTime = 0;
+    this.quiet = 0;
     try {
       this.panels = this.definition.resolve(simulation).map(makePanel);
       this.frame.say(null);
@@ -220,27 +224,7 @@ export class PlaneView implements View {
     c.clearRect(0, 0, copy.canvas.width, copy.canvas.height);
     c.drawImage(trail.canvas, 0, 0);
     c.restore();
-    const g = trail.context;
-    g.clearRect(0, 0, frame.width, frame.height);
-    this.panels.forEach((panel, i) => {
-      const old = before[i];
-      const sx = panel.mx.a / old.mx.a;
-      const sy = panel.my.a / old.my.a;
-      const ox = panel.mx.b - sx * old.mx.b;
-      const oy = panel.my.b - sy * old.my.b;
-      g.save();
-      g.beginPath();
-      g.rect(panel.rect.left, panel.rect.top, panel.rect.width, panel.rect.height);
-      g.clip();
-      g.transform(sx, 0, 0, sy, ox, oy);
-      g.drawImage(copy.canvas, 0, 0, frame.width, frame.height);
-      g.restore();
-      const { pens } = panel;
-      for (let k = 0; k < pens.x.length; k++) {
-        pens.x[k] = sx * pens.x[k] + ox;
-        pens.y[k] = sy * pens.y[k] + oy;
-      }
-    });
+    rescaleImage(trail.context, copy.canvas, this.panels, before, frame.width, frame.height, frame.dpr);
   }
 
   /** Redraws the trail layer from the record, oldest age bucket first. */
@@ -273,47 +257,15 @@ export class PlaneView implements View {
     if (this.mode.kind !== 'full' && this.sinceRedraw > cleanEvery * this.mode.length) {
       this.redrawTrail();
     } else {
-      if (alpha > 0) {
-        const g = this.trail.context;
-        g.save();
-        g.globalCompositeOperation = 'destination-out';
-        g.fillStyle = `rgba(0,0,0,${alpha})`;
-        g.fillRect(0, 0, this.frame.width, this.frame.height);
-        g.restore();
-      }
+      if (alpha > 0) fadeLayer(this.trail.context, alpha, this.frame.width, this.frame.height);
       if (this.mode.kind !== 'none') this.traceRange(from, to, 1);
     }
     this.dirty = true;
   }
 
-  /** Strokes rows [from, to) of every track at `opacity`, one path per panel and colour group. */
+  /** Strokes rows [from, to) of every track onto the trail at `opacity`. */
   private traceRange(from: number, to: number, opacity: number): void {
-    const record = this.simulation!.record;
-    const g = this.trail.context;
-    const slices = record.slices(from, to);
-    const { lineWidth, lineOpacity } = this.lineStyle();
-    g.save();
-    g.lineWidth = lineWidth;
-    g.globalAlpha = opacity * lineOpacity;
-    for (const panel of this.panels) {
-      const { rect, pens, xs, ys, shown } = panel;
-      const jump = this.definition.jump ?? 0.25;
-      const stroke: Stroke = { minStep: MIN_STEP, jumpX: jump * (shown.x1 - shown.x0), jumpY: jump * (shown.y1 - shown.y0) };
-      g.save();
-      g.beginPath();
-      g.rect(rect.left, rect.top, rect.width, rect.height);
-      g.clip();
-      for (let i = 0; i < panel.groups.length; i++) {
-        g.strokeStyle = this.color(panel.groups[i]);
-        g.beginPath();
-        for (let k = panel.starts[i]; k < panel.starts[i + 1]; k++) {
-          for (const s of slices) traceRows(g, s.data, record.width, s.from, s.to, xs[k], ys[k], panel.mx, panel.my, pens, k, stroke);
-        }
-        g.stroke();
-      }
-      g.restore();
-    }
-    g.restore();
+    strokeRows(this.trail.context, this.simulation!.record, this.panels, from, to, opacity, this.lineStyle());
   }
 
   /** Base and trail layers onto the visible canvas, then a dot at each track's current state. */
@@ -323,60 +275,27 @@ export class PlaneView implements View {
     frame.compose(this.base);
     frame.compose(this.trail);
     const record = this.simulation?.record;
-    const tracks = this.trackCount();
-    const radius = this.definition.dot ?? (tracks > 100 ? 1.6 : tracks > 10 ? 2.5 : 4);
-    if (record && record.length && radius > 0) this.drawDots(record.length - 1, radius);
+    const radius = this.definition.dot ?? defaultLook(this.trackCount()).radius;
+    if (record && record.length && radius > 0) {
+      drawDots(frame.context, record, record.length - 1, this.panels, radius, this.color, frame.theme.bg);
+    }
     frame.markReady();
     this.dirty = false;
-  }
-
-  private drawDots(row: number, radius: number): void {
-    const record = this.simulation!.record;
-    const [slice] = record.slices(row, row + 1);
-    const at = slice.from * record.width;
-    const g = this.frame.context;
-    g.save();
-    for (const panel of this.panels) {
-      const { rect, xs, ys, mx, my } = panel;
-      g.save();
-      g.beginPath();
-      g.rect(rect.left - radius, rect.top - radius, rect.width + 2 * radius, rect.height + 2 * radius);
-      g.clip();
-      for (let i = 0; i < panel.groups.length; i++) {
-        g.beginPath();
-        for (let k = panel.starts[i]; k < panel.starts[i + 1]; k++) {
-          const x = toPixel(mx, slice.data[at + xs[k]]);
-          const y = toPixel(my, slice.data[at + ys[k]]);
-          if (!Number.isFinite(x) || !Number.isFinite(y)) continue;
-          g.moveTo(x + radius, y);
-          g.arc(x, y, radius, 0, 2 * Math.PI);
-        }
-        g.fillStyle = this.color(panel.groups[i]);
-        g.fill();
-        if (radius >= 3) {
-          g.lineWidth = 1.25;
-          g.strokeStyle = this.frame.theme.bg;
-          g.stroke();
-        }
-      }
-      g.restore();
-    }
-    g.restore();
   }
 
   private trackCount(): number {
     return this.panels.reduce((n, p) => n + p.xs.length, 0);
   }
 
-  private lineStyle(): { lineWidth: number; lineOpacity: number } {
-    const tracks = this.trackCount();
+  private lineStyle(): LineStyle {
+    const look = defaultLook(this.trackCount());
     return {
-      lineWidth: this.definition.lineWidth ?? (tracks > 20 ? 1 : 1.5),
-      lineOpacity: this.definition.lineOpacity ?? (tracks > 100 ? 0.55 : 1),
+      lineWidth: this.definition.lineWidth ?? look.lineWidth,
+      lineOpacity: this.definition.lineOpacity ?? look.lineOpacity,
+      jump: this.definition.jump ?? 0.25,
+      color: this.color,
     };
   }
 
-  private color(group: number): string {
-    return this.definition.colors?.[group] ?? seriesColor(this.frame.theme, group);
-  }
+  private readonly color = (group: number): string => this.definition.colors?.[group] ?? seriesColor(this.frame.theme, group);
 }

@@ -60,9 +60,11 @@ export class ScrollBuffer {
     readonly width: number,
     readonly height: number,
     create: SurfaceFactory,
+    /** extra canvas width beyond the tile, for content that overhangs it (axis labels) */
+    readonly overhang = 0,
   ) {
     for (let i = 0; i < SLOTS; i++) {
-      const surface = create(width, height);
+      const surface = create(width + overhang, height);
       this.surfaces.push(surface);
       this.contexts.push(context2d(surface));
     }
@@ -70,7 +72,7 @@ export class ScrollBuffer {
 
   /** Empties every tile. */
   reset(): void {
-    for (let i = 0; i < SLOTS; i++) this.contexts[i].clearRect(0, 0, this.width, this.height);
+    for (let i = 0; i < SLOTS; i++) this.contexts[i].clearRect(0, 0, this.width + this.overhang, this.height);
     this.held.fill(NaN);
   }
 
@@ -84,7 +86,7 @@ export class ScrollBuffer {
     const slot = slotOf(tile);
     const ctx = this.contexts[slot];
     if (this.held[slot] !== tile) {
-      ctx.clearRect(0, 0, this.width, this.height);
+      ctx.clearRect(0, 0, this.width + this.overhang, this.height);
       this.held[slot] = tile;
     }
     return ctx;

@@ -16,10 +16,12 @@ export function selectControl(label: string, name: string, choices: readonly Cho
   element.className = `pb-plot-control pb-plot-control-${name}`;
   element.style.cssText = 'display:inline-flex;align-items:center;gap:0.35em;white-space:nowrap;';
   const text = document.createElement('span');
+  text.className = 'pb-plot-control-label';
+  text.style.color = 'var(--muted,#5e5b55)';
   text.textContent = label;
   const select = document.createElement('select');
   select.name = name;
-  select.style.cssText = 'font:inherit;color:inherit;background:transparent;border:1px solid var(--muted,#9aa0a8);border-radius:4px;padding:1px 4px;max-width:12em;';
+  select.className = 'pb-select';
   select.addEventListener('change', () => onChange(select.value));
   element.append(text, select);
   let current = '';
@@ -45,8 +47,8 @@ export function selectControl(label: string, name: string, choices: readonly Cho
 /** The row of controls above a plot. */
 export function controlRow(...controls: readonly { element: HTMLElement }[]): HTMLDivElement {
   const row = document.createElement('div');
-  row.className = 'pb-plot-controls';
-  row.style.cssText = 'display:flex;flex-wrap:wrap;gap:0.5em 1.25em;align-items:center;margin:0 0 0.4em;font:13px/1.5 var(--font-sans,system-ui,sans-serif);color:var(--fg,inherit);';
+  row.className = 'pb-plot-bar';
+  row.style.cssText = 'display:flex;flex-wrap:wrap;gap:0.3rem 1rem;align-items:center;margin-bottom:0.25rem;';
   row.append(...controls.map((c) => c.element));
   return row;
 }

@@ -14,14 +14,14 @@ export class SpectrumReadout {
   constructor() {
     this.element = document.createElement('div');
     this.element.className = 'pb-spectrum-readout';
-    this.element.style.cssText = 'font:13px/1.5 var(--font-sans,system-ui,sans-serif);color:var(--fg,inherit);margin-top:0.35em;font-variant-numeric:tabular-nums;';
+    this.element.style.cssText = 'margin-top:0.3rem;font-variant-numeric:tabular-nums;';
     this.list = document.createElement('ol');
     this.list.className = 'pb-spectrum-peaks';
     this.list.style.cssText = 'margin:0;padding-left:1.6em;';
     const paragraph = (name: string, muted: boolean) => {
       const p = document.createElement('p');
       p.className = name;
-      p.style.cssText = `margin:0.15em 0 0;${muted ? 'color:var(--muted,#6b7280);font-size:12px;' : ''}`;
+      p.style.cssText = `margin:0.15em 0 0;${muted ? 'color:var(--muted,#5e5b55);' : ''}`;
       return p;
     };
     this.comparison = paragraph('pb-spectrum-theory', false);

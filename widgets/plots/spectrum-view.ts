@@ -1,14 +1,15 @@
-import { spectrum, type Peak, type Spectrum, type WindowName } from '../core/spectrum.ts';
+import type { Peak, Spectrum, WindowName } from '../core/spectrum.ts';
 import type { Simulation } from '../core/simulation.ts';
 import type { View } from '../simulator/view.ts';
 import { drawAxes, fontOf } from './draw-axes.ts';
-import { analyse, theoryOf } from './spectrum-analysis.ts';
-import { basisLine, compareWithTheory, fixed, peakLine, significant } from './peak-readout.ts';
+import { analyse, displaySpectrum, theoryOf } from './spectrum-analysis.ts';
+import { basisLine, compareWithTheory, fixed, frequencyDecimals, peakLine, significant } from './peak-readout.ts';
 import { columnsOf } from './plane-columns.ts';
 import { controlRow, selectControl, seriesChoices, type SelectControl } from './spectrum-controls.ts';
 import { drawSpectrum, lastBin, spectrumMappings, type SpectrumPicture, type SpectrumShow } from './spectrum-plot.ts';
 import { chooseRows, gatherSamples, MIN_SAMPLES, rowsInSpan, type RowChoice, type SpanOption } from './spectrum-rows.ts';
-import { chooseMaxFrequency, largestShown, padFor, steadyLimit } from './spectrum-scale.ts';
+import { chooseMaxFrequency, largestShown, steadyLimit } from './spectrum-scale.ts';
+import { checkSpectrumOptions } from './spectrum-options.ts';
 import { SpectrumReadout } from './spectrum-readout.ts';
 import { ViewFrame } from './view-frame.ts';
 
@@ -29,7 +30,7 @@ export interface SpectrumViewOptions {
   peaks?: number;
   /** milliseconds between recomputations while the simulation runs; default 250 */
   refresh?: number;
-  /** more samples than this are thinned by block means; default 32768 */
+  /** more samples than this are thinned by block means (which lowers only the Nyquist frequency, not the resolution); default 8192 */
   maxSamples?: number;
   /** show the series, window and Re/Im selectors; default true */
   controls?: boolean;
@@ -51,6 +52,7 @@ export interface SpectrumView extends View {
  * second, with refined peak readouts and an optional theoretical marker.
  */
 export function spectrumView(options: SpectrumViewOptions = {}): SpectrumView {
+  checkSpectrumOptions(options);
   return new SpectrumViewImpl(options);
 }
 
@@ -66,6 +68,10 @@ class SpectrumViewImpl implements SpectrumView {
   private buffer = new Float64Array(0);
   private computedAt = -Infinity;
   private computedTotal = -1;
+  /** milliseconds the last update took */
+  private cost = 0;
+  /** a recompute due when the refresh interval ends */
+  private timer: ReturnType<typeof setTimeout> | undefined;
   private picture: SpectrumPicture | null = null;
   private waiting = `Not enough samples yet`;
   private maxFrequency: number | undefined;
@@ -110,7 +116,13 @@ class SpectrumViewImpl implements SpectrumView {
     if (simulation !== this.simulation || record.columns !== this.columns || total < this.computedTotal) this.reset(simulation);
     if (this.frame.measure()) this.render();
     const now = performance.now();
-    if (total !== this.computedTotal && now - this.computedAt >= (this.options.refresh ?? 250)) this.update();
+    // at most a few times a second, and never more than about 5% of the time however long a compute takes
+    const interval = Math.max(this.options.refresh ?? 250, 20 * this.cost);
+    if (total === this.computedTotal) return;
+    const wait = this.computedAt + interval - now;
+    if (wait <= 0) this.update();
+    // If the frames stop (the simulation paused) before the next recompute, the last samples still get one.
+    else this.timer ??= setTimeout(() => this.update(), wait);
   }
 
   reset(simulation: Simulation): void {
@@ -131,6 +143,8 @@ class SpectrumViewImpl implements SpectrumView {
   }
 
   update(): void {
+    if (this.timer !== undefined) clearTimeout(this.timer);
+    this.timer = undefined;
     const simulation = this.simulation;
     if (!simulation) return;
     const { record } = simulation;
@@ -138,7 +152,7 @@ class SpectrumViewImpl implements SpectrumView {
     this.computedTotal = record.dropped + record.length;
     this.seriesSelect.setChoices(seriesChoices(this.columns, this.series), this.series);
     const column = record.columnIndex(this.series);
-    const choice = column > 0 ? chooseRows(record, this.options.span, this.options.maxSamples ?? 32768) : null;
+    const choice = column > 0 ? chooseRows(record, this.options.span, this.options.maxSamples ?? 8192) : null;
     if (!choice || column <= 0) {
       const [from, to] = rowsInSpan(record, this.options.span);
       if (column > 0) this.clearResult(`Not enough samples yet: ${to - from} of the ${MIN_SAMPLES} needed`);
@@ -151,6 +165,7 @@ class SpectrumViewImpl implements SpectrumView {
       }
     }
     this.render();
+    this.cost = performance.now() - this.computedAt;
   }
 
   canvases(): { name: string; canvas: HTMLCanvasElement }[] {
@@ -158,6 +173,8 @@ class SpectrumViewImpl implements SpectrumView {
   }
 
   dispose(): void {
+    if (this.timer !== undefined) clearTimeout(this.timer);
+    this.timer = undefined;
     this.frame.dispose();
     this.simulation = null;
   }
@@ -177,15 +194,15 @@ class SpectrumViewImpl implements SpectrumView {
     const theory = theoryOf(this.options.theory, (f) => fixed(f, 3));
     const nyquist = 0.5 / choice.interval;
     this.maxFrequency = Math.min(nyquist, this.options.maxFrequency ?? chooseMaxFrequency(peaks, nyquist, theory?.frequency, this.maxFrequency, choice.duration));
-    // Zero-padding samples the same windowed DTFT more finely: a smooth curve where few bins fall on the axis.
-    const pad = padFor(s, this.maxFrequency);
-    const shown = pad > 1 ? spectrum(samples, choice.interval, { window: this.window, pad }) : s;
+    const shown = displaySpectrum(samples, choice.interval, this.window, this.maxFrequency);
     this.yMax = steadyLimit(largestShown(shown, this.show !== 'magnitude', lastBin(shown, this.maxFrequency)), this.yMax);
     this.spectrum = s;
     this.peaks = peaks;
     this.picture = { spectrum: shown, peaks, show: this.show, maxFrequency: this.maxFrequency, yMax: this.yMax, theory, series: this.series };
     if (peaks.length) this.element.dataset.peak = String(peaks[0].frequency);
     else delete this.element.dataset.peak;
+    const strongest = peaks.length ? `; strongest peak at f = ${fixed(peaks[0].frequency, frequencyDecimals(choice.duration))}` : '';
+    this.frame.canvas.setAttribute('aria-label', `Frequency spectrum of ${this.series}${strongest}`);
     const t0 = record.time(choice.from);
     this.readout.show(
       peaks.map((p) => peakLine(p, choice.duration)),

@@ -1,6 +1,7 @@
 import { scaleLinear } from 'd3-scale';
 import { h as el } from '../controls/dom.ts';
-import { drawXAxis, drawYAxis, MARGIN, type Box } from './axes.ts';
+import { drawXFrame, drawXTicks, drawYAxis, MARGIN, type Box } from './axes.ts';
+import { multiples, timeTicks } from './time-axis.ts';
 import type { Context } from './canvas.ts';
 import type { Theme } from './colors.ts';
 import { axisTicks } from './ticks.ts';
@@ -31,26 +32,35 @@ export interface AxesState {
   t1: number;
 }
 
-/** The grid and the y axis, on the frame canvas (context scaled to CSS pixels); redrawn only when the y range changes. */
-export function drawTimeYAxis(ctx: Context, state: AxesState, theme: Theme, width: number, height: number): void {
+/**
+ * The still part of a time plot, on its frame canvas (context scaled to CSS
+ * pixels): grid, y axis, the t axis line and its name. Redrawn only when the
+ * y range, size or theme changes.
+ */
+export function drawTimeFrame(ctx: Context, state: AxesState, theme: Theme, width: number, height: number): void {
   const { box, kind, domain, inset } = state;
   ctx.clearRect(0, 0, width, height);
   const y = yScale(kind, domain, [box.y + box.height * (1 - inset), box.y + box.height * inset]);
   drawYAxis(ctx, box, axisTicks(kind, domain, Math.max(2, Math.floor(box.height / 36))), y, theme);
+  drawXFrame(ctx, box, theme, 't');
 }
 
-/** The top of the band under the plot that holds the t axis, in CSS pixels. */
+/** The top of the band under the plot that holds the t ticks, in CSS pixels. */
 export function xBandTop(box: Box): number {
-  return box.y + box.height - 1;
+  return box.y + box.height;
 }
 
-/** The t axis, on its own band canvas, redrawn as the window scrolls; the context is scaled to CSS pixels. */
-export function drawTimeXAxis(ctx: Context, state: AxesState, theme: Theme, width: number): void {
+/**
+ * The t ticks of a scrolled-back window on the band canvas under the plot
+ * (context scaled to CSS pixels, origin at the band's top left); the same
+ * steps and labels as the live strips (time-axis.ts).
+ */
+export function drawTimeTicks(ctx: Context, state: AxesState, theme: Theme, window: number, width: number, height: number): void {
   const { box, t0, t1 } = state;
-  const top = xBandTop(box);
-  ctx.clearRect(0, top, width, MARGIN.bottom + 1);
+  ctx.clearRect(0, 0, width, height);
+  const { step, format } = timeTicks(window, box.width);
   const x = scaleLinear().domain([t0, t1]).range([box.x, box.x + box.width]);
-  drawXAxis(ctx, box, axisTicks('linear', [t0, t1], Math.max(2, Math.floor(box.width / 90))), x, theme);
+  drawXTicks(ctx, 0.5, multiples(t0, t1 + 1e-9 * step, step), format, x, theme);
 }
 
 /**

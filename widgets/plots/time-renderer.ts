@@ -60,11 +60,11 @@ export class TimeRenderer {
     return this.origin + column / this.scaleX;
   }
 
-  /** Sets the plot area's size in device pixels (ratio = device pixels per CSS pixel); needs a redraw. */
-  resize(width: number, height: number, ratio: number): void {
+  /** Sets the plot area's size in device pixels and the stroke width; needs a redraw. */
+  resize(width: number, height: number, lineWidth = 1.5): void {
     this.width = Math.max(1, Math.round(width));
     this.height = Math.max(1, Math.round(height));
-    this.lineWidth = 1.5 * ratio;
+    this.lineWidth = lineWidth;
     this.pad = Math.ceil(this.lineWidth) + 2;
     this.buffer = new ScrollBuffer(this.width, this.height, this.create);
     this.setDomain(this.domain);

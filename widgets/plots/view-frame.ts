@@ -1,3 +1,5 @@
+import { pixelRatio } from './canvas.ts';
+import { watchTheme } from './colors.ts';
 import { readTheme, sameTheme, type Theme } from './view-theme.ts';
 
 /** An offscreen canvas kept at the frame's size, with its context scaled to CSS pixels. */
@@ -28,6 +30,8 @@ const FALLBACK_WIDTH = 640;
  */
 export class ViewFrame {
   readonly element: HTMLDivElement;
+  /** the bordered box holding the canvas and any message over it */
+  readonly stage: HTMLDivElement;
   readonly canvas: HTMLCanvasElement;
   readonly context: CanvasRenderingContext2D;
   width = FALLBACK_WIDTH;
@@ -43,13 +47,20 @@ export class ViewFrame {
     const element = document.createElement('div');
     element.dataset.widget = options.kind;
     element.className = `pb-plot pb-plot-${options.kind}`;
-    element.style.cssText = 'position:relative;width:100%;max-width:100%;box-sizing:border-box;';
+    element.style.cssText = 'width:100%;max-width:100%;min-width:0;';
+    // The stage looks like the time plot's: the page's background, a hairline border.
+    const stage = document.createElement('div');
+    stage.className = 'pb-plot-stage';
+    stage.style.cssText =
+      'position:relative;background:var(--bg,#fbfaf6);border:1px solid var(--rule,#dedad0);border-radius:4px;overflow:hidden;';
     const canvas = document.createElement('canvas');
     canvas.setAttribute('role', 'img');
     canvas.setAttribute('aria-label', options.label);
-    canvas.style.cssText = 'display:block;width:100%;touch-action:pan-y;';
-    element.append(canvas);
+    canvas.style.cssText = 'display:block;width:100%;';
+    stage.append(canvas);
+    element.append(stage);
     this.element = element;
+    this.stage = stage;
     this.canvas = canvas;
     this.context = this.contextOf(canvas);
     this.theme = readTheme(element);
@@ -71,8 +82,8 @@ export class ViewFrame {
    * changed (clearing them); returns whether it did.
    */
   measure(force = false): boolean {
-    const dpr = Math.max(1, Math.min(4, globalThis.devicePixelRatio || 1));
-    const measured = this.element.clientWidth;
+    const dpr = Math.min(4, pixelRatio());
+    const measured = this.canvas.clientWidth;
     const width = Math.max(160, Math.round(measured > 0 ? measured : this.width || FALLBACK_WIDTH));
     if (!force && width === this.width && dpr === this.dpr) return false;
     this.width = width;
@@ -84,15 +95,16 @@ export class ViewFrame {
     return true;
   }
 
-  /** Fills the visible canvas with the background, ready for layers to be composed onto it. */
+  /**
+   * Clears the visible canvas, ready for layers to be composed onto it. It
+   * stays transparent, like the time plot's, so the plot sits on whatever
+   * surface holds it; a PNG download puts it on the theme's background.
+   */
   clear(): void {
     const g = this.context;
     g.save();
     g.setTransform(1, 0, 0, 1, 0, 0);
-    g.globalAlpha = 1;
-    g.globalCompositeOperation = 'source-over';
-    g.fillStyle = this.theme.bg;
-    g.fillRect(0, 0, this.canvas.width, this.canvas.height);
+    g.clearRect(0, 0, this.canvas.width, this.canvas.height);
     g.restore();
   }
 
@@ -117,8 +129,8 @@ export class ViewFrame {
       this.note.className = 'pb-plot-note';
       this.note.setAttribute('role', 'status');
       this.note.style.cssText =
-        'position:absolute;left:0;right:0;top:40%;text-align:center;padding:0 1em;font:13px/1.4 var(--font-sans,system-ui,sans-serif);color:var(--muted,#6b7280);pointer-events:none;';
-      this.element.append(this.note);
+        'position:absolute;left:0;right:0;top:50%;transform:translateY(-50%);text-align:center;padding:0 1.5em;color:var(--muted,#5e5b55);pointer-events:none;';
+      this.stage.append(this.note);
     }
     if (this.note.textContent !== text) this.note.textContent = text;
   }
@@ -158,20 +170,9 @@ export class ViewFrame {
     const changed = () => this.changed();
     if (typeof ResizeObserver === 'function') {
       const resize = new ResizeObserver(changed);
-      resize.observe(this.element);
+      resize.observe(this.stage);
       this.cleanups.push(() => resize.disconnect());
     }
-    if (typeof MutationObserver === 'function') {
-      const themes = new MutationObserver(changed);
-      const options = { attributes: true, attributeFilter: ['class', 'data-theme', 'style'] };
-      themes.observe(document.documentElement, options);
-      if (document.body) themes.observe(document.body, options);
-      this.cleanups.push(() => themes.disconnect());
-    }
-    if (typeof matchMedia === 'function') {
-      const scheme = matchMedia('(prefers-color-scheme: dark)');
-      scheme.addEventListener('change', changed);
-      this.cleanups.push(() => scheme.removeEventListener('change', changed));
-    }
+    this.cleanups.push(watchTheme(changed));
   }
 }

@@ -67,6 +67,7 @@ export class Driver {
   ) {
     this.speed = checkSpeed(options.speed ?? 1);
     this.budget = options.budget ?? DEFAULT_BUDGET;
+    views.forEach((v) => v.setPlaying?.(false));
     document.addEventListener('visibilitychange', this.onVisibility);
   }
 

@@ -49,7 +49,7 @@ export function flattenInitial(initial: unknown, dim?: number): { values: Float6
     if (!isList(row)) throw new Error(`simulator: ${which} is not a list of numbers`);
     if (row.length !== expected) {
       const need = dim === undefined ? `${width}, like initial[0]` : `${dim} (q's then p's for ${dim / 2} degree(s) of freedom)`;
-      throw new Error(`simulator: ${which} has ${row.length} values; it needs ${need}`);
+      throw new Error(`simulator: ${which} has ${row.length} value${row.length === 1 ? '' : 's'}; it needs ${need}`);
     }
     for (let i = 0; i < row.length; i++) {
       if (typeof row[i] !== 'number' || !Number.isFinite(row[i])) throw new Error(`simulator: ${which}[${i}] is ${String(row[i])}, not a finite number`);

@@ -2,21 +2,18 @@ import '../widgets.css';
 import { canonicalEquations, type HamiltonianSpec } from '../core/canonical-equations.ts';
 import { Simulation, type DerivedSeries } from '../core/simulation.ts';
 import type { Model } from '../core/types.ts';
-import { h } from '../controls/dom.ts';
-import { Readouts } from '../controls/readouts.ts';
-import { Transport } from '../controls/transport.ts';
-import { DataPanel } from '../data/data-panel.ts';
 import { phasePortrait, type PhasePortraitOptions } from '../plots/phase-portrait.ts';
 import { spectrumView, type SpectrumViewOptions } from '../plots/spectrum-view.ts';
 import { timePlot, type TimePlotOptions } from '../plots/time-plot.ts';
 import { trajectoryView, type TrajectoryOptions } from '../plots/trajectory-view.ts';
-import { Driver } from './driver.ts';
-import { Notices } from './notices.ts';
+import { mount, type SimulatorElement } from './mount.ts';
 import {
   BATCH_EVERY, checkOptionNames, defaultCapacity, derivedSeries, flattenInitial, oneLine, recordWidth, viewNames,
   type DerivedFunction, type ViewName,
 } from './options.ts';
 import type { View } from './view.ts';
+
+export type { SimulatorElement, SimulatorHandle } from './mount.ts';
 
 export interface SimulatorOptions {
   /** H as a math expression ('p^2/2 + q^2/2') or a JS function (t, x) => … (source or function) */
@@ -56,22 +53,6 @@ export interface SimulatorOptions {
   label?: string;
 }
 
-/** What a simulator element offers scripts: its driver and the current simulation. */
-export interface SimulatorHandle {
-  readonly driver: Driver;
-  readonly simulation: Simulation;
-  readonly model: Model;
-  play(): void;
-  pause(): void;
-  restart(): void;
-  step(): void;
-  setSpeed(speed: number): void;
-  setDt(dt: number): void;
-  dispose(): void;
-}
-
-export type SimulatorElement = HTMLElement & { simulator: SimulatorHandle };
-
 const FACTORIES: Record<ViewName, (o: SimulatorOptions) => View> = {
   time: (o) => timePlot(o.timePlot),
   trajectory: (o) => trajectoryView(o.trajectory),
@@ -88,6 +69,7 @@ const FACTORIES: Record<ViewName, (o: SimulatorOptions) => View> = {
 export async function simulator(options: SimulatorOptions): Promise<SimulatorElement> {
   if (typeof options !== 'object' || options === null) throw new Error('simulator: pass an options object, e.g. simulator({hamiltonian, initial})');
   checkOptionNames(options);
+  checkNumbers(options);
   const names = viewNames(options.views);
   const model = await buildModel(options);
   const { values, count } = flattenInitial(options.initial, model.dim);
@@ -126,115 +108,29 @@ async function buildModel(options: SimulatorOptions): Promise<Model> {
   }
 }
 
+/** Speed and capacity, checked here so their messages name the option. */
+function checkNumbers(options: SimulatorOptions): void {
+  const { speed, capacity } = options;
+  if (speed !== undefined && !(typeof speed === 'number' && speed > 0 && Number.isFinite(speed))) {
+    throw new Error(`simulator: speed must be a positive number of time units per second, not ${String(speed)}`);
+  }
+  if (capacity !== undefined && !(Number.isInteger(capacity) && capacity >= 2)) {
+    throw new Error(`simulator: capacity must be a whole number of rows, at least 2, not ${String(capacity)}`);
+  }
+}
+
 /** Evaluates H and the derived series once, so a mistake is reported now rather than as NaN later. */
 function checkEvaluates(model: Model, initial: Float64Array, derived: readonly DerivedSeries[]): void {
   const rate = new Float64Array(model.dim);
   const check = (what: string, f: () => unknown): void => {
     try {
       const v = f();
-      if (typeof v === 'number' && Number.isNaN(v) && what !== 'the equations') throw new Error('it is NaN');
+      if (typeof v === 'number' && Number.isNaN(v)) throw new Error('it is NaN');
     } catch (error) {
-      throw new Error(`simulator: ${what} fails at the initial state: ${oneLine(error)}`);
+      throw new Error(`simulator: ${what} at the initial state: ${oneLine(error)}`);
     }
   };
-  check('the equations', () => model.field(0, initial, rate));
-  if (model.hamiltonian) check('H', () => model.hamiltonian!(0, initial, 0));
-  for (const d of derived) check(`derived series ${d.name}`, () => d.evaluate(0, initial, 0));
-}
-
-function mount(
-  options: SimulatorOptions,
-  model: Model,
-  first: Simulation,
-  views: View[],
-  make: (dt: number) => Simulation,
-): SimulatorElement {
-  const notices = new Notices();
-  const readouts = new Readouts();
-  const viewBox = h('div', 'pb-views', {}, ...views.map((v) => v.element));
-  const panel = new DataPanel(() =>
-    views.flatMap((v) => (v.canvases ? v.canvases().map((c) => ({ name: c.name, canvas: () => v.canvases!().find((d) => d.name === c.name)!.canvas })) : [])),
-  );
-  const root = h('section', 'pb-simulator', { 'data-widget': 'simulator', tabindex: '-1', 'aria-label': options.label ?? 'Simulator' }) as SimulatorElement;
-  const driver = new Driver(first, views, { speed: options.speed, element: root });
-  const transport = new Transport(
-    {
-      toggle: () => driver.toggle(),
-      restart: () => driver.restart(),
-      step: () => driver.step(),
-      setSpeed: (s) => driver.setSpeed(s),
-      setDt: (dt) => driver.replace(make(dt)),
-    },
-    driver.speed,
-    first.dt,
-  );
-  root.append(h('div', 'pb-bar', {}, transport.element, readouts.element), notices.alert, notices.note, viewBox, panel.element);
-
-  let slow = 0;
-  driver.on('frame', (stats) => {
-    const sim = driver.simulation;
-    readouts.update(sim);
-    const now = performance.now();
-    if (now - slow > 500) {
-      slow = now;
-      transport.showRate(driver.targetRate, driver.playing ? stats.pace : 1);
-      notices.showCap(sim);
-      panel.update(sim);
-    }
-    if (!root.hasAttribute('data-ready') && views.every((v) => v.element.hasAttribute('data-ready'))) root.setAttribute('data-ready', '');
-  });
-  driver.on('state', ({ playing, error }) => {
-    readouts.update(driver.simulation, true);
-    panel.update(driver.simulation, true);
-    transport.setPlaying(playing, !!error);
-    notices.showError(error);
-    root.classList.toggle('pb-playing', playing);
-  });
-  driver.on('reset', (sim) => {
-    transport.showDt(sim.dt);
-    readouts.reset(sim);
-    notices.showCap(sim);
-    panel.update(sim, true);
-    panel.listPlots();
-  });
-
-  root.addEventListener('keydown', (e) => {
-    if (e.key !== ' ' || e.ctrlKey || e.metaKey || e.altKey || isControl(e.target)) return;
-    e.preventDefault();
-    driver.toggle();
-  });
-  const resize = typeof ResizeObserver === 'undefined' ? null : new ResizeObserver(() => driver.requestDraw());
-  resize?.observe(root);
-  driver.on('dispose', () => resize?.disconnect());
-  void options.invalidation?.then(() => driver.dispose());
-
-  readouts.reset(first);
-  panel.update(first, true);
-  panel.listPlots();
-  views.forEach((v) => v.reset(first));
-  transport.setPlaying(false, false);
-  driver.requestDraw();
-  if (options.autoplay !== false) driver.play();
-
-  root.simulator = {
-    driver,
-    get simulation() {
-      return driver.simulation;
-    },
-    model,
-    play: () => driver.play(),
-    pause: () => driver.pause(),
-    restart: () => driver.restart(),
-    step: () => driver.step(),
-    setSpeed: (s) => driver.setSpeed(s),
-    setDt: (dt) => driver.replace(make(dt)),
-    dispose: () => driver.dispose(),
-  };
-  return root;
-}
-
-/** True for targets that handle Space themselves: buttons, fields, links, editors. */
-function isControl(target: EventTarget | null): boolean {
-  if (!(target instanceof HTMLElement)) return false;
-  return target.isContentEditable || /^(BUTTON|INPUT|SELECT|TEXTAREA|A|SUMMARY)$/.test(target.tagName);
+  check('Hamilton’s equations fail', () => model.field(0, initial, rate));
+  if (model.hamiltonian) check('H fails', () => model.hamiltonian!(0, initial, 0));
+  for (const d of derived) check(`the derived series ${d.name} fails`, () => d.evaluate(0, initial, 0));
 }

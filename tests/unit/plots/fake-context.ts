@@ -13,7 +13,7 @@ export function fakeContext(): { context: CanvasRenderingContext2D; calls: Call[
   const calls: Call[] = [];
   const state: Record<string, unknown> = {};
   const handler: ProxyHandler<Record<string, unknown>> = {
-    get(target, key) {
+    get(_target, key) {
       if (typeof key !== 'string') return undefined;
       if (key === 'measureText') return (text: string) => ({ width: 6 * text.length });
       if (key in state) return state[key];
@@ -21,7 +21,7 @@ export function fakeContext(): { context: CanvasRenderingContext2D; calls: Call[
         calls.push({ name: key, args });
       };
     },
-    set(target, key, value) {
+    set(_target, key, value) {
       if (typeof key === 'string') {
         state[key] = value;
         calls.push({ name: `set ${key}`, args: [value] });

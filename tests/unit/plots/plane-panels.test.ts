@@ -87,3 +87,25 @@ describe('plane-panels', () => {
     expect(settlePanel(p)).toBe(false);
   });
 });
+
+describe('plane-panels growth', () => {
+  it('growPanel(panel) never drops what was shown, and each growth is at least GROWTH× on the side that grew', () => {
+    const p = makePanel(spec({ equal: false }));
+    Object.assign(p.fresh, { x0: -4.5, x1: 4.5, y0: -1, y1: 1 });
+    growPanel(p);
+    placePanel(p, { left: 0, top: 0, width: 300, height: 200 });
+    let previous = { ...p.fitted };
+    // particles fly off to the right, a little further each frame
+    for (let x = 5; x <= 60; x += 0.5) {
+      Object.assign(p.fresh, { x0: x - 1, x1: x, y0: -1, y1: 1 });
+      if (growPanel(p)) {
+        expect(p.fitted.x0).toBeLessThanOrEqual(previous.x0);
+        expect(p.fitted.x1 - p.fitted.x0).toBeGreaterThanOrEqual(1.4 * (previous.x1 - previous.x0) - 1e-9);
+        placePanel(p, p.rect);
+        previous = { ...p.fitted };
+      }
+    }
+    expect(p.fitted.x1).toBeGreaterThanOrEqual(60);
+    expect(p.fitted.x1).toBeLessThan(60 * 1.4 + 10);
+  });
+});

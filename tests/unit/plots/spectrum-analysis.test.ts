@@ -2,7 +2,9 @@ import { describe, expect, it } from 'vitest';
 import { canonicalEquations } from '../../../widgets/core/canonical-equations.ts';
 import { Simulation } from '../../../widgets/core/simulation.ts';
 import { compareWithTheory } from '../../../widgets/plots/peak-readout.ts';
-import { analyse, theoryOf } from '../../../widgets/plots/spectrum-analysis.ts';
+import { hamming } from '../../../widgets/core/window.ts';
+import { analyse, displaySpectrum, theoryOf } from '../../../widgets/plots/spectrum-analysis.ts';
+import { lastBin } from '../../../widgets/plots/spectrum-plot.ts';
 import { chooseRows, gatherSamples } from '../../../widgets/plots/spectrum-rows.ts';
 import { largestShown } from '../../../widgets/plots/spectrum-scale.ts';
 
@@ -55,5 +57,40 @@ describe('spectrum-analysis', () => {
     expect(largestShown(s, false, 2)).toBe(2);
     expect(largestShown(s, true, 2)).toBe(3);
     expect(largestShown(s, false, 99)).toBe(7);
+  });
+});
+
+describe('displaySpectrum', () => {
+  /** The windowed DTFT of y at f, normalised as the core's spectrum, referred to the first sample. */
+  function dtft(y: Float64Array, dt: number, f: number): [number, number] {
+    const n = y.length;
+    let mean = 0;
+    for (const v of y) mean += v / n;
+    let re = 0;
+    let im = 0;
+    let sum = 0;
+    for (let j = 0; j < n; j++) {
+      const w = hamming(j / n);
+      sum += w;
+      re += w * (y[j] - mean) * Math.cos(2 * Math.PI * f * j * dt);
+      im -= w * (y[j] - mean) * Math.sin(2 * Math.PI * f * j * dt);
+    }
+    return [(2 * re) / sum, (2 * im) / sum];
+  }
+
+  it('displaySpectrum(samples, Δ, window, fmax) thins the samples but keeps |X|, Re and Im where it is drawn', () => {
+    const dt = 1e-3;
+    const y = Float64Array.from({ length: 8192 }, (_, j) => 2 * Math.cos(2 * Math.PI * 1.5 * j * dt + 0.7) + 0.3 * Math.cos(2 * Math.PI * 40 * j * dt));
+    const s = displaySpectrum(y, dt, 'hamming', 4);
+    expect(s.interval).toBeGreaterThan(5 * dt);
+    expect(s.frequency[lastBin(s, 4)]).toBeGreaterThan(4);
+    expect(lastBin(s, 4)).toBeGreaterThan(300);
+    for (const f of [1.3, 1.5, 1.62, 3]) {
+      const k = Math.round(f / s.binWidth);
+      const [re, im] = dtft(y, dt, s.frequency[k]);
+      expect(s.re[k]).toBeCloseTo(re, 2);
+      expect(s.im[k]).toBeCloseTo(im, 2);
+      expect(s.amplitude[k]).toBeCloseTo(Math.hypot(re, im), 2);
+    }
   });
 });

@@ -14,7 +14,7 @@ function push(record: TrajectoryRecord, t0: number, t1: number, dt: number, ampl
 function setup(window = 10, width = 200): { renderer: TimeRenderer; record: TrajectoryRecord; tiles: FakeSurface[] } {
   const { create, made } = fakeFactory();
   const renderer = new TimeRenderer(create, window);
-  renderer.resize(width, 100, 1);
+  renderer.resize(width, 100, 1.5);
   renderer.setSeries([1, 2], ['red', 'blue']);
   const record = new TrajectoryRecord(['t', 'q', 'p'], 100_000);
   renderer.reset(0);

@@ -1,0 +1,98 @@
+import { el } from './time-plot-parts.ts';
+import { wheelColumns } from './history.ts';
+
+/** What scrolling a time plot back needs from it. */
+export interface Scrollable {
+  /** the right edge (column) of the window shown now */
+  end(): number;
+  /** the plot width in device pixels, and device pixels per CSS pixel */
+  width(): number;
+  ratio(): number;
+  paused(): boolean;
+  /** shows the window ending at column `end` (clamped; the live end follows the trace again) */
+  scrollTo(end: number): void;
+  goLive(): void;
+}
+
+/**
+ * Drag, wheel and keys on the plot stage: drag or a horizontal (or shift)
+ * wheel at any time, any wheel while paused; ← → by a tenth of a window,
+ * Page Up/Down by a window, Home to the start of the record, End to live.
+ */
+export function listenScroll(stage: HTMLElement, plot: Scrollable): void {
+  stage.addEventListener(
+    'wheel',
+    (e) => {
+      const columns = wheelColumns(e, plot.paused(), plot.width(), plot.ratio());
+      if (columns === 0) return;
+      e.preventDefault();
+      plot.scrollTo(plot.end() + columns);
+    },
+    { passive: false },
+  );
+  let dragX: number | null = null;
+  stage.addEventListener('pointerdown', (e) => {
+    if (e.button !== 0) return;
+    dragX = e.clientX;
+    stage.setPointerCapture?.(e.pointerId);
+    stage.classList.add('pb-dragging');
+  });
+  stage.addEventListener('pointermove', (e) => {
+    if (dragX === null) return;
+    const dx = (e.clientX - dragX) * plot.ratio();
+    if (Math.abs(dx) < 1) return;
+    dragX = e.clientX;
+    plot.scrollTo(plot.end() - dx);
+  });
+  const release = (): void => {
+    dragX = null;
+    stage.classList.remove('pb-dragging');
+  };
+  stage.addEventListener('pointerup', release);
+  stage.addEventListener('pointercancel', release);
+  stage.addEventListener('keydown', (e) => {
+    const step = ({ ArrowLeft: -0.1, ArrowRight: 0.1, PageUp: -1, PageDown: 1 } as Record<string, number>)[e.key];
+    if (step !== undefined) plot.scrollTo(plot.end() + step * plot.width());
+    else if (e.key === 'Home') plot.scrollTo(-Infinity);
+    else if (e.key === 'End') plot.goLive();
+    else return;
+    e.preventDefault();
+  });
+}
+
+/** The slider under a time plot: where the window is in the record, a Live button, and the window's times. */
+export class ScrubBar {
+  readonly element: HTMLElement;
+  readonly live: HTMLButtonElement;
+  private readonly slider: HTMLInputElement;
+  private readonly status: HTMLElement;
+
+  constructor(onScrub: (time: number) => void, onLive: () => void) {
+    this.slider = el('input', 'pb-scrub', { type: 'range', min: '0', max: '1', step: 'any', value: '1', 'aria-label': 'Scroll back through the recorded history' });
+    this.live = el('button', 'pb-button pb-small', { type: 'button', disabled: '', title: 'Follow the simulation again' }, 'Live');
+    this.status = el('span', 'pb-scrub-status', { 'aria-live': 'off' });
+    this.element = el('div', 'pb-scrub-row', {}, this.slider, this.live, this.status);
+    this.slider.addEventListener('input', () => onScrub(Number(this.slider.value)));
+    this.live.addEventListener('click', onLive);
+  }
+
+  /**
+   * Shows a window [t0, t1] of a record spanning [first, last] whose window
+   * right edges can range over [lo, hi]; `following` when it is the live one.
+   */
+  show(lo: number, hi: number, t0: number, t1: number, first: number, last: number, following: boolean): void {
+    this.slider.min = String(lo);
+    this.slider.max = String(hi);
+    this.slider.value = String(t1);
+    this.slider.disabled = hi - lo <= 0;
+    const text = `t ${short(t0)} – ${short(t1)}${following ? '' : ` of ${short(first)} – ${short(last)}`}`;
+    this.slider.setAttribute('aria-valuetext', text);
+    this.status.textContent = following ? '' : text;
+    this.live.disabled = following;
+  }
+}
+
+/** A time with four significant digits, or whole above 1000. */
+export function short(t: number): string {
+  return Math.abs(t) >= 1000 ? t.toFixed(0) : t.toPrecision(4).replace(/(\.\d*?)0+$/, '$1').replace(/\.$/, '');
+}

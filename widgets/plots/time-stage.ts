@@ -1,0 +1,179 @@
+import type { TrajectoryRecord } from '../core/record.ts';
+import { MARGIN } from './axes.ts';
+import { context2d, createSurface, sizeCanvas, type Surface } from './canvas.ts';
+import type { Theme } from './colors.ts';
+import { TimeAxisStrips } from './time-axis.ts';
+import { compositePlot, drawTimeFrame, drawTimeTicks, el, plotBox, xBandTop, type AxesState } from './time-plot-parts.ts';
+import { TimeRenderer } from './time-renderer.ts';
+import type { YScaleKind } from './y-map.ts';
+
+/** CSS pixels the t labels may show left of the plot area: enough for a label at its left edge, not for the next. */
+const STRIP_LEFT = 8;
+
+/**
+ * The layers of a time plot, bottom to top: the frame canvas (grid, axes,
+ * redrawn only when the y range changes); the live trace as the scroll
+ * ring's tile canvases, moved by CSS transforms like the paper's sprites, so
+ * showing a frame repaints nothing; a canvas for a scrolled-back window
+ * drawn from the record; and the t ticks, as strips moving with the tiles
+ * (live) or a band canvas (scrolled back).
+ */
+export class TimeStage {
+  readonly element: HTMLElement;
+  readonly renderer: TimeRenderer;
+  ratio = 1;
+  cssWidth = 0;
+  private readonly frame: HTMLCanvasElement;
+  private readonly tiles: HTMLElement;
+  private readonly history: HTMLCanvasElement;
+  private readonly stripBox: HTMLElement;
+  private readonly strips: TimeAxisStrips;
+  private readonly band: HTMLCanvasElement;
+  private newTiles: HTMLCanvasElement[] = [];
+  private newStrips: HTMLCanvasElement[] = [];
+  private readonly tileX = new Float64Array(3).fill(NaN);
+  private readonly stripX = new Float64Array(3).fill(NaN);
+  private frameKey = '';
+  private bandKey = '';
+
+  constructor(
+    readonly cssHeight: number,
+    window: number,
+    kind: YScaleKind,
+    label: string,
+  ) {
+    this.renderer = new TimeRenderer((w, h) => this.layer(w, h, this.newTiles), window, kind);
+    this.strips = new TimeAxisStrips((w, h) => this.layer(w, h, this.newStrips));
+    const hidden = { 'aria-hidden': 'true' };
+    this.frame = el('canvas', 'pb-frame', hidden);
+    this.tiles = el('div', 'pb-tiles', hidden);
+    this.history = el('canvas', 'pb-data-layer', hidden);
+    this.stripBox = el('div', 'pb-tiles pb-xstrips', hidden);
+    this.band = el('canvas', 'pb-xaxis', hidden);
+    this.history.hidden = this.band.hidden = true;
+    for (const layer of [this.tiles, this.history]) Object.assign(layer.style, { left: `${MARGIN.left}px`, top: `${MARGIN.top}px` });
+    const aria = { tabindex: '0', role: 'group', 'aria-roledescription': 'plot', 'aria-label': `${label}: drag, or use the arrow keys, to scroll back in time` };
+    this.element = el('div', 'pb-stage', aria, this.frame, this.tiles, this.history, this.stripBox, this.band);
+    this.element.style.height = `${cssHeight}px`;
+  }
+
+  /** Sizes every layer for a width in CSS pixels and a pixel ratio; the caller then redraws. */
+  layout(cssWidth: number, ratio: number, lineWidth: number): void {
+    this.cssWidth = cssWidth;
+    this.ratio = ratio;
+    const box = plotBox(cssWidth, this.cssHeight);
+    sizeCanvas(this.frame, cssWidth, this.cssHeight, ratio);
+    sizeCanvas(this.history, box.width, box.height, ratio);
+    sizeCanvas(this.band, cssWidth, MARGIN.bottom, ratio);
+    this.band.style.top = `${xBandTop(box)}px`;
+    Object.assign(this.tiles.style, { width: `${box.width}px`, height: `${box.height}px` });
+    this.renderer.resize(this.history.width, this.history.height, lineWidth);
+    this.strips.resize(this.renderer.width, Math.round(MARGIN.bottom * ratio), ratio, this.renderer);
+    Object.assign(this.stripBox.style, {
+      left: `${box.x - STRIP_LEFT}px`,
+      top: `${xBandTop(box)}px`,
+      width: `${box.width + STRIP_LEFT + MARGIN.right}px`,
+      height: `${MARGIN.bottom}px`,
+    });
+    this.tiles.replaceChildren(...this.newTiles);
+    this.stripBox.replaceChildren(...this.newStrips);
+    this.newTiles = [];
+    this.newStrips = [];
+    this.tileX.fill(NaN);
+    this.stripX.fill(NaN);
+    this.invalidate();
+  }
+
+  /** Forgets the drawn axes (a new theme, window or origin). */
+  invalidate(): void {
+    this.frameKey = this.bandKey = '';
+    this.strips.reset(this.renderer);
+  }
+
+  /** Shows the live trace: moves tiles and strips into place, redraws the frame if the y range changed. */
+  showLive(theme: Theme): void {
+    this.setMode(true);
+    const move = (positions: Float64Array, shift: number) => (slot: number, surface: Surface, x: number): void => {
+      if (Object.is(positions[slot], x)) return;
+      positions[slot] = x;
+      const style = (surface as HTMLCanvasElement).style;
+      if (x !== x) style.visibility = 'hidden';
+      else {
+        style.visibility = '';
+        style.transform = `translateX(${x / this.ratio + shift}px)`;
+      }
+    };
+    const r = this.renderer;
+    r.place(move(this.tileX, 0));
+    this.strips.place(r.end, r, theme, move(this.stripX, STRIP_LEFT - this.strips.spill / this.ratio));
+    this.drawFrame(theme, this.axes(r.left));
+  }
+
+  /** Shows the window of columns [end − width, end) drawn from the record, with its t ticks. */
+  showHistory(record: TrajectoryRecord, end: number, theme: Theme): void {
+    this.setMode(false);
+    const r = this.renderer;
+    r.renderWindow(context2d(this.history), record, end);
+    const state = this.axes(end - r.width);
+    this.drawFrame(theme, state);
+    const key = `${end} ${r.width} ${r.window} ${this.frameKey}`;
+    if (key === this.bandKey) return;
+    this.bandKey = key;
+    const ctx = context2d(this.band);
+    ctx.setTransform(this.ratio, 0, 0, this.ratio, 0, 0);
+    drawTimeTicks(ctx, state, theme, r.window, this.cssWidth, MARGIN.bottom);
+  }
+
+  /** The picture as shown, for a PNG: opaque, with a legend line, at device resolution. */
+  composite(theme: Theme, legend: readonly { name: string; color: string }[], live: boolean): HTMLCanvasElement {
+    const box = plotBox(this.cssWidth, this.cssHeight);
+    const r = this.ratio;
+    return compositePlot(this.frame.width, this.frame.height, r, theme, legend, (ctx, top) => {
+      ctx.drawImage(this.frame, 0, top);
+      const x = Math.round(box.x * r);
+      const y = top + Math.round(box.y * r);
+      const band = top + Math.round(xBandTop(box) * r);
+      const clip = (x0: number, y0: number, w: number, h: number, paint: () => void): void => {
+        ctx.save();
+        ctx.beginPath();
+        ctx.rect(x0, y0, w, h);
+        ctx.clip();
+        paint();
+        ctx.restore();
+      };
+      clip(x, y, this.history.width, this.history.height, () => (live ? this.renderer.composite(ctx, x, y) : ctx.drawImage(this.history, x, y)));
+      if (!live) ctx.drawImage(this.band, 0, band);
+      else clip(x - STRIP_LEFT * r, band, (box.width + STRIP_LEFT + MARGIN.right) * r, MARGIN.bottom * r, () => this.strips.composite(ctx, this.renderer.end, x, band));
+    });
+  }
+
+  private setMode(live: boolean): void {
+    this.tiles.style.visibility = this.stripBox.style.visibility = live ? '' : 'hidden';
+    this.history.hidden = this.band.hidden = live;
+  }
+
+  private axes(left: number): AxesState {
+    const r = this.renderer;
+    return { box: plotBox(this.cssWidth, this.cssHeight), kind: r.kind, domain: r.domain, inset: r.inset, t0: r.timeOf(left), t1: r.timeOf(left + r.width) };
+  }
+
+  /** Redraws grid and y axis when the range, size or theme changed. */
+  private drawFrame(theme: Theme, state: AxesState): void {
+    const key = `${state.kind} ${state.domain[0]} ${state.domain[1]} ${this.cssWidth} ${this.ratio} ${theme.text} ${theme.grid}`;
+    if (key === this.frameKey) return;
+    this.frameKey = key;
+    const ctx = context2d(this.frame);
+    ctx.setTransform(this.ratio, 0, 0, this.ratio, 0, 0);
+    drawTimeFrame(ctx, state, theme, this.cssWidth, this.cssHeight);
+  }
+
+  /** A tile or axis strip of a scroll ring: a canvas the page moves rather than repaints. */
+  private layer(width: number, height: number, into: HTMLCanvasElement[]): Surface {
+    const canvas = createSurface(width, height) as HTMLCanvasElement;
+    canvas.style.width = `${width / this.ratio}px`;
+    canvas.style.height = `${height / this.ratio}px`;
+    canvas.style.visibility = 'hidden';
+    into.push(canvas);
+    return canvas;
+  }
+}

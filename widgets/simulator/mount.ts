@@ -1,0 +1,146 @@
+import { h } from '../controls/dom.ts';
+import { Readouts } from '../controls/readouts.ts';
+import { Transport } from '../controls/transport.ts';
+import type { Simulation } from '../core/simulation.ts';
+import type { Model } from '../core/types.ts';
+import { DataPanel } from '../data/data-panel.ts';
+import { Driver } from './driver.ts';
+import { Notices } from './notices.ts';
+import type { View } from './view.ts';
+
+/** What a simulator element offers scripts: its driver and the current simulation. */
+export interface SimulatorHandle {
+  readonly driver: Driver;
+  readonly simulation: Simulation;
+  readonly model: Model;
+  play(): void;
+  pause(): void;
+  restart(): void;
+  step(): void;
+  setSpeed(speed: number): void;
+  setDt(dt: number): void;
+  /** writes parameters into the model (no recompilation) and restarts from the initial state */
+  setParams(values: Readonly<Record<string, number>>): void;
+  dispose(): void;
+}
+
+export type SimulatorElement = HTMLElement & { simulator: SimulatorHandle };
+
+/** What mount needs of the options: the speed, autoplay, invalidation and label. */
+export interface MountOptions {
+  speed?: number;
+  autoplay?: boolean;
+  invalidation?: Promise<unknown>;
+  label?: string;
+}
+
+/**
+ * Assembles a simulator widget: controls and readouts, the blow-up alert and
+ * the capped-record note, the views, and the data panel, all wired to one
+ * Driver; `make(dt)` builds the simulation again for a new time step.
+ */
+export function mount(
+  options: MountOptions,
+  model: Model,
+  first: Simulation,
+  views: View[],
+  make: (dt: number) => Simulation,
+): SimulatorElement {
+  const notices = new Notices();
+  const readouts = new Readouts();
+  const viewBox = h('div', 'pb-views', {}, ...views.map((v) => v.element));
+  const panel = new DataPanel(() =>
+    views.flatMap((v) => (v.canvases ? v.canvases().map((c) => ({ name: c.name, canvas: () => v.canvases!().find((d) => d.name === c.name)!.canvas })) : [])),
+  );
+  const root = h('section', 'pb-simulator', { 'data-widget': 'simulator', tabindex: '-1', 'aria-label': options.label ?? 'Simulator' }) as SimulatorElement;
+  const driver = new Driver(first, views, { speed: options.speed, element: root });
+  const transport = new Transport(
+    {
+      toggle: () => driver.toggle(),
+      restart: () => driver.restart(),
+      step: () => driver.step(),
+      setSpeed: (s) => driver.setSpeed(s),
+      setDt: (dt) => driver.replace(make(dt)),
+    },
+    driver.speed,
+    first.dt,
+  );
+  root.append(h('div', 'pb-bar', {}, transport.element, readouts.element), notices.alert, notices.note, viewBox, panel.element);
+
+  let slow = 0;
+  driver.on('frame', (stats) => {
+    const sim = driver.simulation;
+    readouts.update(sim);
+    const now = performance.now();
+    if (now - slow > 500) {
+      slow = now;
+      transport.showRate(driver.targetRate, driver.playing ? stats.pace : 1);
+      notices.showCap(sim);
+      panel.update(sim);
+    }
+    if (!root.hasAttribute('data-ready') && views.every((v) => v.element.hasAttribute('data-ready'))) root.setAttribute('data-ready', '');
+  });
+  driver.on('state', ({ playing, error }) => {
+    readouts.update(driver.simulation, true);
+    panel.update(driver.simulation, true);
+    transport.setPlaying(playing, !!error);
+    notices.showError(error);
+    root.classList.toggle('pb-playing', playing);
+  });
+  driver.on('reset', (sim) => {
+    transport.showDt(sim.dt);
+    readouts.reset(sim);
+    notices.showCap(sim);
+    panel.update(sim, true);
+    panel.listPlots();
+  });
+
+  root.addEventListener('keydown', (e) => {
+    if (e.key !== ' ' || e.ctrlKey || e.metaKey || e.altKey || isControl(e.target)) return;
+    e.preventDefault();
+    driver.toggle();
+  });
+  const resize = typeof ResizeObserver === 'undefined' ? null : new ResizeObserver(() => driver.requestDraw());
+  resize?.observe(root);
+  driver.on('dispose', () => resize?.disconnect());
+  void options.invalidation?.then(() => driver.dispose());
+
+  readouts.reset(first);
+  panel.update(first, true);
+  panel.listPlots();
+  views.forEach((v) => v.reset(first));
+  transport.setPlaying(false, false);
+  driver.requestDraw();
+  if (options.autoplay !== false) driver.play();
+
+  root.simulator = {
+    driver,
+    get simulation() {
+      return driver.simulation;
+    },
+    model,
+    play: () => driver.play(),
+    pause: () => driver.pause(),
+    restart: () => driver.restart(),
+    step: () => driver.step(),
+    setSpeed: (s) => driver.setSpeed(s),
+    setDt: (dt) => driver.replace(make(dt)),
+    setParams: (values) => {
+      for (const [name, value] of Object.entries(values)) {
+        const i = model.paramNames.indexOf(name);
+        if (i < 0) throw new Error(`simulator: the model has no parameter ${name}; it has ${model.paramNames.join(', ') || 'none'}`);
+        if (!Number.isFinite(value)) throw new Error(`simulator: ${name} must be a finite number, not ${value}`);
+        model.params[i] = value;
+      }
+      driver.restart();
+    },
+    dispose: () => driver.dispose(),
+  };
+  return root;
+}
+
+/** True for targets that handle Space themselves: buttons, fields, links, editors. */
+function isControl(target: EventTarget | null): boolean {
+  if (!(target instanceof HTMLElement)) return false;
+  return target.isContentEditable || /^(BUTTON|INPUT|SELECT|TEXTAREA|A|SUMMARY)$/.test(target.tagName);
+}
