@@ -1,9 +1,9 @@
 import { canonicalEquations } from '../core/canonical-equations.ts';
 import { csvHeader, csvRows } from '../core/csv.ts';
 import { InputError } from '../core/errors.ts';
+import { exportMeta } from '../core/export-meta.ts';
 import { jsonHead, jsonRows, jsonTail, type ExportMeta } from '../core/json.ts';
 import { DEFAULT_DT, Simulation } from '../core/simulation.ts';
-import { VERSION } from '../core/version.ts';
 import { number, numberList, params, parseArgs, positive, wholeNumber } from './args.ts';
 import { fileSink, stdoutSink, type Sink } from './output.ts';
 import { progressBar } from './progress.ts';
@@ -50,20 +50,7 @@ export async function simulate(argv: readonly string[]): Promise<void> {
   // t-end is reached by a whole number of steps; a hair of tolerance keeps 10/5e-4 from losing its last step.
   const steps = Math.floor(tEnd / dt + 1e-9);
   const simulation = new Simulation(model, { initial, dt, every, capacity: ROWS_PER_BLOCK + 1 });
-  const meta: ExportMeta = {
-    hamiltonian,
-    params: values,
-    dof,
-    dt,
-    method: 'rk38',
-    every,
-    t0: 0,
-    initial,
-    route: model.route,
-    names: [...model.names],
-    derived: simulation.derived.map((d) => d.name),
-    version: VERSION,
-  };
+  const meta = exportMeta(simulation);
   const output = args.values.get('output');
   const sink: Sink = output ? fileSink(output) : stdoutSink();
   try {

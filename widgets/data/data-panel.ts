@@ -5,7 +5,7 @@ import { resolveTheme } from '../plots/colors.ts';
 import { downloadBlob, downloadText, onBackground, pngBlob } from './download.ts';
 import { csvParts, jsonParts } from './export.ts';
 import { exportName, selectRows, type Selection } from './interval.ts';
-import { exportMeta } from './meta.ts';
+import { exportMeta } from '../core/export-meta.ts';
 
 /** A plot a PNG can be made of. */
 export interface PlotSource {

@@ -7,7 +7,7 @@ import { Simulation } from '../../../widgets/core/simulation.ts';
 import { VERSION } from '../../../widgets/core/version.ts';
 import { BLOCK_ROWS, csvParts, jsonParts } from '../../../widgets/data/export.ts';
 import { exportName, selectRows } from '../../../widgets/data/interval.ts';
-import { exportMeta } from '../../../widgets/data/meta.ts';
+import { exportMeta } from '../../../widgets/core/export-meta.ts';
 
 function ring(rows: number, capacity: number): TrajectoryRecord {
   const record = new TrajectoryRecord(['t', 'q', 'p', 'H'], capacity);

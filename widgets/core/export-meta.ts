@@ -1,6 +1,6 @@
-import type { ExportMeta } from '../core/json.ts';
-import type { Simulation } from '../core/simulation.ts';
-import { VERSION } from '../core/version.ts';
+import type { ExportMeta } from './json.ts';
+import type { Simulation } from './simulation.ts';
+import { VERSION } from './version.ts';
 
 /** The integration method of every simulation: the classical Runge–Kutta 3/8 rule. */
 export const METHOD = 'rk38';
