@@ -33,10 +33,12 @@ export async function openSite(options) {
  */
 export async function openChapter(site, path) {
   const page = await site.context.newPage();
+  // Clear saved edits from the contents page, which runs no cells: reloading a chapter instead
+  // would abort the requests its widgets had in flight, and those would count as problems.
+  await page.goto(site.origin + '/');
+  await page.evaluate(() => localStorage.clear());
   const watch = watchPage(page);
   await page.goto(site.origin + path);
-  await page.evaluate(() => localStorage.clear());
-  await page.reload();
   await cellsReady(page);
   return { page, ...watch };
 }

@@ -38,6 +38,8 @@ export interface PlaneDefinition extends PlaneStyle {
 
 /** Age buckets a fading trail is redrawn in. */
 const BUCKETS = 24;
+/** A trail redraw slower than this (ms of drawing calls) is avoided where a cheaper way exists. */
+const EXPENSIVE_REDRAW_MS = 6;
 /** Frames without growth after which an auto extent left loose by growing is tightened. */
 const SETTLE_FRAMES = 45;
 
@@ -198,7 +200,11 @@ export class PlaneView implements View {
       drawLegend(g, panel.rect, items, frame.theme, spec.title);
     }
     const linear = this.panels.every((p) => p.mx.kind === 'linear' && p.my.kind === 'linear');
-    const rescaled = rescale && linear && !this.holdsTrail();
+    // Rescale the old image, rather than redraw from the record, when the record no longer holds the
+    // trail, or when a fading trail is costly to redraw (a large batch): a growing extent must not stall
+    // a frame, and a faded image's rescaling blur soon fades away (a full trail keeps the exact redraw).
+    const costly = this.mode.kind !== 'full' && this.redrawCost >= EXPENSIVE_REDRAW_MS;
+    const rescaled = rescale && linear && (!this.holdsTrail() || costly);
     if (rescaled) this.rescaleTrail(before);
     else this.redrawTrail();
     this.dirty = true;
@@ -253,7 +259,7 @@ export class PlaneView implements View {
     const alpha = this.fader.advance(elapsed);
     this.sinceRedraw += elapsed;
     // A redraw every trail length or four, if cheap, clears the faint ghost that 8-bit fading leaves (see trail.ts).
-    const cleanEvery = this.redrawCost < 2 ? 1 : this.redrawCost < 6 ? 4 : Infinity;
+    const cleanEvery = this.redrawCost < 2 ? 1 : this.redrawCost < EXPENSIVE_REDRAW_MS ? 4 : Infinity;
     if (this.mode.kind !== 'full' && this.sinceRedraw > cleanEvery * this.mode.length) {
       this.redrawTrail();
     } else {

@@ -84,6 +84,8 @@ export function mount(
     readouts.update(driver.simulation, true);
     panel.update(driver.simulation, true);
     transport.setPlaying(playing, !!error);
+    // Paused or stopped is not "behind real time": drop the note the last frames may have left.
+    if (!playing) transport.showRate(driver.targetRate, 1);
     notices.showError(error);
     root.classList.toggle('pb-playing', playing);
   });

@@ -1,0 +1,418 @@
+/**
+ * `npm run bench:browser`: the live book measured in headless Chromium
+ * against the built site, driven the way a reader drives it — by editing the
+ * cells of /playground/. Prints a markdown report on stdout (progress goes to
+ * stderr):
+ *
+ * 0. the frame-rate ceiling of an empty page (headless Chromium's
+ *    requestAnimationFrame is paced by a virtual display, which need not be
+ *    60 Hz), against which the widgets' frame rates are also given;
+ * a. the paper's default model (eq. 7) at speed 1 (2000 steps/s): the share of
+ *    a 16.7 ms frame spent integrating and drawing, from the driver's own
+ *    stats, beside the main thread's busy share and the long tasks;
+ * b. the same model at speed 50 (100 000 steps/s): frame rate and steps/s;
+ * c. the paper's scattered beam (section 7.3) with 1000 particles: frame rate;
+ * d. per-page JavaScript (gzip) on first load, after the editor loads, and
+ *    after the cell parser loads.
+ *
+ * Builds the site first when dist/ (or PHASEBOOK_OUT_DIR) has none.
+ * BENCH_SECONDS sets the measuring window per scenario (default 4 s, after a
+ * 2 s warm-up).
+ */
+import { spawnSync } from 'node:child_process';
+import { existsSync, readdirSync } from 'node:fs';
+import { cpus, totalmem } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { gzipSync } from 'node:zlib';
+import { launchBrowser } from '../tests/e2e/browser.mjs';
+import { DIST, startServer } from '../tests/e2e/server.mjs';
+
+const ROOT = fileURLToPath(new URL('../', import.meta.url));
+const SECONDS = Number(process.env.BENCH_SECONDS ?? 4);
+const WARM_UP_MS = 2000;
+const FRAME_MS = 1000 / 60;
+
+const log = (message) => process.stderr.write(`${message}\n`);
+
+// ── the paper's models, as a reader types them into the playground ──────────
+const DEFAULT_MODEL = {
+  H: 'H = "p^2/2 + omega^2*(1 + u*cos(gamma*t))*q^2/2 - f*q*cos(kappa*t + beta)"',
+  dof: 'dof = 1',
+  params: 'params = ({u: 0.3, gamma: 21.7, beta: 0.2, kappa: 8, omega: 10, f: 20})',
+  initial: 'initial = [2, 0]',
+};
+const DEFAULT_H = 'p^2/2 + omega^2*(1 + u*cos(gamma*t))*q^2/2 - f*q*cos(kappa*t + beta)';
+const BEAM_H = 'p0^2 + p1^2 + 30/sqrt(q0^2 + q1^2)';
+const BEAM_MODEL = {
+  H: `H = "${BEAM_H}"`,
+  dof: 'dof = 2',
+  params: 'params = ({})',
+  initial: 'initial = Array.from({length: 1000}, (_, i) => [-20, (i - 500) * 0.006, 4, 0])',
+};
+
+function ensureBuilt() {
+  if (existsSync(join(DIST, 'index.html'))) return;
+  log(`No built site in ${DIST}: building (astro build)…`);
+  const result = spawnSync('npx', ['astro', 'build'], {
+    cwd: ROOT,
+    stdio: ['ignore', process.stderr, process.stderr],
+    env: { ...process.env, ASTRO_TELEMETRY_DISABLED: '1' },
+  });
+  if (result.status !== 0) throw new Error('astro build failed');
+}
+
+// ── driving cells ─────────────────────────────────────────────────────────────
+const cell = (page, id) => page.locator(`[data-cell="${id}"]`);
+
+/** The text of a cell as the page holds it (editor or static code). */
+async function sourceOf(page, id) {
+  return cell(page, id).evaluate((root) => {
+    const lines = root.querySelectorAll('.cm-content .cm-line');
+    if (lines.length) return [...lines].map((line) => line.textContent).join('\n');
+    return root.querySelector('pre.cell-code')?.textContent ?? '';
+  });
+}
+
+/** Replaces a cell's text like a reader (click, select all, type) and runs it. */
+async function typeIntoCell(page, id, source) {
+  if ((await sourceOf(page, id)) === source) return;
+  const root = cell(page, id);
+  await root.locator('.cell-editor').click();
+  const content = root.locator('.cm-content');
+  await content.waitFor({ timeout: 10_000 });
+  await content.click();
+  await page.keyboard.press('ControlOrMeta+A');
+  await page.keyboard.insertText(source);
+  await page.keyboard.press('Shift+Enter');
+}
+
+/** Sets the playground's cells, then waits for the simulator they describe to be drawn. */
+async function setPlayground(page, model, options, expect) {
+  for (const [id, source] of Object.entries(model)) await typeIntoCell(page, id, source);
+  await typeIntoCell(page, 'options', `options = (${options})`);
+  await page.waitForFunction(
+    ({ h, count, speed }) => {
+      const el = document.querySelector('[data-cell="sim"] [data-widget="simulator"]');
+      const s = el?.simulator;
+      return !!s && el.hasAttribute('data-ready') && s.model.source === h && s.simulation.count === count && s.driver.speed === speed;
+    },
+    expect,
+    { timeout: 60_000 },
+  );
+}
+
+/**
+ * Measures the running simulator for `ms`: rAF timestamps, the driver's
+ * per-frame integrate/draw times, long tasks, and steps taken.
+ */
+function measureInPage(ms) {
+  return new Promise((resolve) => {
+    const el = document.querySelector('[data-cell="sim"] [data-widget="simulator"]');
+    const { driver } = el.simulator;
+    const costs = [];
+    const off = driver.on('frame', (s) => costs.push([s.integrateMs, s.drawMs, s.steps]));
+    const stamps = [];
+    let running = true;
+    const loop = (t) => {
+      stamps.push(t);
+      if (running) requestAnimationFrame(loop);
+    };
+    requestAnimationFrame(loop);
+    const longTasks = [];
+    let observer = null;
+    try {
+      observer = new PerformanceObserver((list) => list.getEntries().forEach((e) => longTasks.push(e.duration)));
+      observer.observe({ type: 'longtask' });
+    } catch {
+      observer = null;
+    }
+    const sim0 = el.simulator.simulation;
+    const steps0 = sim0.steps;
+    const t0 = performance.now();
+    setTimeout(() => {
+      running = false;
+      off();
+      observer?.disconnect();
+      const sim = el.simulator.simulation;
+      const wall = performance.now() - t0;
+      resolve({
+        wall,
+        stamps,
+        costs,
+        longTasks,
+        longTaskSupported: observer !== null,
+        steps: sim === sim0 ? sim.steps - steps0 : NaN,
+        driverRate: driver.stats.stepsPerSecond,
+        pace: driver.stats.pace,
+        targetRate: driver.targetRate,
+        playing: driver.playing,
+        error: sim.error ? sim.error.message : null,
+        recordRows: sim.record.length,
+        dropped: sim.record.dropped,
+      });
+    }, ms);
+  });
+}
+
+/** Counts rAF callbacks on a blank page: the frame-rate ceiling of this browser. */
+function rafCeilingInPage(ms) {
+  return new Promise((resolve) => {
+    const stamps = [];
+    const start = performance.now();
+    const loop = (t) => {
+      stamps.push(t);
+      if (performance.now() - start < ms) requestAnimationFrame(loop);
+      else resolve(stamps);
+    };
+    requestAnimationFrame(loop);
+  });
+}
+
+// ── statistics ────────────────────────────────────────────────────────────────
+const mean = (xs) => (xs.length ? xs.reduce((a, b) => a + b, 0) / xs.length : NaN);
+function quantile(xs, q) {
+  if (!xs.length) return NaN;
+  const s = [...xs].sort((a, b) => a - b);
+  return s[Math.min(s.length - 1, Math.floor(q * s.length))];
+}
+function frameStats(stamps) {
+  const gaps = stamps.slice(1).map((t, i) => t - stamps[i]);
+  const span = stamps.length > 1 ? stamps.at(-1) - stamps[0] : NaN;
+  return {
+    fps: ((stamps.length - 1) * 1000) / span,
+    p95: quantile(gaps, 0.95),
+    worst: gaps.length ? Math.max(...gaps) : NaN,
+    // a gap over 1.5 frames means at least one frame was missed
+    missed: gaps.filter((g) => g > 1.5 * FRAME_MS).length,
+    frames: gaps.length,
+  };
+}
+
+const f1 = (x) => (Number.isFinite(x) ? x.toFixed(1) : '–');
+const f2 = (x) => (Number.isFinite(x) ? x.toFixed(2) : '–');
+const pct = (x) => (Number.isFinite(x) ? `${(100 * x).toFixed(1)} %` : '–');
+const int = (x) => (Number.isFinite(x) ? Math.round(x).toLocaleString('en') : '–');
+const kb = (bytes) => `${(bytes / 1024).toFixed(1)} KB`;
+
+async function cdpMetrics(session) {
+  const { metrics } = await session.send('Performance.getMetrics');
+  return Object.fromEntries(metrics.map((m) => [m.name, m.value]));
+}
+
+/** Runs one scenario: set the cells, warm up, measure. */
+async function scenario(page, session, { model, options, expect }) {
+  await setPlayground(page, model, options, expect);
+  await page.waitForTimeout(WARM_UP_MS);
+  const before = await cdpMetrics(session);
+  const m = await page.evaluate(measureInPage, SECONDS * 1000);
+  const after = await cdpMetrics(session);
+  const wallS = m.wall / 1000;
+  const busy = (after.TaskDuration - before.TaskDuration) / wallS;
+  const script = (after.ScriptDuration - before.ScriptDuration) / wallS;
+  const work = m.costs.map(([i, d]) => i + d);
+  const frames = frameStats(m.stamps);
+  return {
+    ...m,
+    frames,
+    busy,
+    script,
+    integrate: mean(m.costs.map(([i]) => i)),
+    draw: mean(m.costs.map(([, d]) => d)),
+    work: mean(work),
+    workP95: quantile(work, 0.95),
+    stepsPerSecond: m.steps / wallS,
+    longTotal: m.longTasks.reduce((a, b) => a + b, 0),
+  };
+}
+
+// ── per-page JavaScript ───────────────────────────────────────────────────────
+const EDITOR_CHUNK = /\/_astro\/editor\.[\w-]+\.js$/;
+const PARSER_CHUNK = /\/_astro\/(parse|parser)\.[\w-]+\.js$/;
+
+function sitePages() {
+  const pages = ['/'];
+  for (const entry of readdirSync(DIST, { withFileTypes: true })) {
+    if (entry.isDirectory() && !entry.name.startsWith('_') && existsSync(join(DIST, entry.name, 'index.html'))) pages.push(`/${entry.name}/`);
+  }
+  return pages;
+}
+
+async function pageBytes(context, origin, path) {
+  const page = await context.newPage();
+  await page.addInitScript(() => localStorage.clear());
+  let stage = 'first';
+  /** @type {Map<string, {stage: string, bytes: number}>} */
+  const scripts = new Map();
+  const pending = [];
+  page.on('response', (response) => {
+    const url = response.url();
+    if (!/\.m?js(\?|$)/.test(url) || scripts.has(url)) return;
+    const at = EDITOR_CHUNK.test(url) ? 'editor' : PARSER_CHUNK.test(url) ? 'parser' : stage;
+    scripts.set(url, { stage: at, bytes: 0 });
+    pending.push(
+      response.body().then(
+        (body) => (scripts.get(url).bytes = gzipSync(body, { level: 9 }).length),
+        () => {},
+      ),
+    );
+  });
+  await page.goto(origin + path);
+  await page.waitForLoadState('load');
+  const cells = await page.locator('[data-cell]').count();
+  if (cells > 0) {
+    await page.waitForSelector('body[data-cells-ready]', { state: 'attached', timeout: 30_000 });
+    await page
+      .waitForFunction(() => [...document.querySelectorAll('[data-widget]')].every((w) => w.hasAttribute('data-ready')), null, { timeout: 30_000 })
+      .catch(() => log(`  ${path}: some widgets were not ready after 30 s`));
+  }
+  await page.waitForLoadState('networkidle').catch(() => {});
+  if (cells > 0) {
+    stage = 'editor';
+    const first = cell(page, await page.locator('[data-cell]').first().getAttribute('data-cell'));
+    await first.locator('.cell-editor').click();
+    await first.locator('.cm-content').waitFor({ timeout: 10_000 });
+    await page.waitForLoadState('networkidle').catch(() => {});
+    stage = 'parser';
+    // An edit the build did not parse: a space at the end of the first cell, run.
+    await first.locator('.cm-content').click();
+    await page.keyboard.press('ControlOrMeta+End');
+    await page.keyboard.insertText(' ');
+    await page.keyboard.press('Shift+Enter');
+    await page.waitForResponse((r) => PARSER_CHUNK.test(r.url()), { timeout: 10_000 }).catch(() => {});
+    await page.waitForTimeout(300);
+    await page.waitForLoadState('networkidle').catch(() => {});
+  }
+  await Promise.all(pending);
+  await page.close();
+  const sum = (stages) => {
+    const list = [...scripts.values()].filter((s) => stages.includes(s.stage));
+    return { files: list.length, bytes: list.reduce((a, s) => a + s.bytes, 0) };
+  };
+  return {
+    path,
+    cells,
+    first: sum(['first']),
+    editor: cells > 0 ? sum(['first', 'editor']) : null,
+    parser: cells > 0 ? sum(['first', 'editor', 'parser']) : null,
+  };
+}
+
+// ── main ──────────────────────────────────────────────────────────────────────
+async function main() {
+  const started = Date.now();
+  ensureBuilt();
+  const server = await startServer();
+  const browser = await launchBrowser();
+  const out = [];
+  const print = (line = '') => out.push(line);
+  try {
+    const blank = await browser.context.newPage();
+    const session0 = await browser.context.newCDPSession(blank);
+    const version = await session0.send('Browser.getVersion');
+    await blank.setContent('<!doctype html><title>blank</title>');
+    log('measuring the frame-rate ceiling of an empty page…');
+    const ceiling = frameStats(await blank.evaluate(rafCeilingInPage, 3000));
+    await blank.close();
+
+    const page = await browser.context.newPage();
+    await page.addInitScript(() => localStorage.clear());
+    const session = await browser.context.newCDPSession(page);
+    await session.send('Performance.enable');
+    await page.goto(`${server.origin}/playground/`);
+    await page.waitForSelector('body[data-cells-ready]', { state: 'attached', timeout: 30_000 });
+    await page.waitForSelector('[data-cell="sim"] [data-widget="simulator"][data-ready]', { timeout: 30_000 });
+
+    log('a. the default model at speed 1…');
+    const a = await scenario(page, session, {
+      model: DEFAULT_MODEL,
+      options: "{dt: 5e-4, speed: 1, views: ['time', 'phase', 'spectrum']}",
+      expect: { h: DEFAULT_H, count: 1, speed: 1 },
+    });
+    log('b. the default model at speed 50…');
+    const b = await scenario(page, session, {
+      model: DEFAULT_MODEL,
+      options: "{dt: 5e-4, speed: 50, views: ['time', 'phase', 'spectrum']}",
+      expect: { h: DEFAULT_H, count: 1, speed: 50 },
+    });
+    log('c. the 1000-particle beam, trajectory view…');
+    const c1 = await scenario(page, session, {
+      model: BEAM_MODEL,
+      options: "{speed: 1, views: ['trajectory']}",
+      expect: { h: BEAM_H, count: 1000, speed: 1 },
+    });
+    log('c. the 1000-particle beam, trajectory and time views…');
+    const c2 = await scenario(page, session, {
+      model: BEAM_MODEL,
+      options: "{speed: 1, views: ['trajectory', 'time']}",
+      expect: { h: BEAM_H, count: 1000, speed: 1 },
+    });
+    await page.close();
+
+    log('d. JavaScript per page…');
+    const pages = [];
+    for (const path of sitePages()) {
+      log(`  ${path}`);
+      pages.push(await pageBytes(browser.context, server.origin, path));
+    }
+
+    // ── report ──
+    const cpu = cpus();
+    print('# Phasebook in the browser');
+    print();
+    print(`Machine: ${cpu[0]?.model ?? 'unknown CPU'}, ${cpu.length} cores, ${(totalmem() / 2 ** 30).toFixed(1)} GiB; ` +
+      `Node ${process.version}; ${version.product} (headless, --disable-gpu).`);
+    print(`Each scenario: ${WARM_UP_MS / 1000} s warm-up, then ${SECONDS} s measured. Frame budget 16.7 ms (60 Hz).`);
+    print();
+    print(`Empty-page frame-rate ceiling (rAF on a blank page, 3 s): **${f1(ceiling.fps)} fps** ` +
+      `(p95 frame interval ${f1(ceiling.p95)} ms, ${ceiling.missed} missed frame(s) of ${ceiling.frames}).`);
+    print();
+    const rel = (fps) => pct(fps / ceiling.fps);
+    print('| Scenario | Measure | Result | Target |');
+    print('|---|---|---|---|');
+    const row = (s, m, r, t = '') => print(`| ${s} | ${m} | ${r} | ${t} |`);
+    const A = 'a. eq. 7, speed 1 (time, phase, spectrum)';
+    row(A, 'integrate + draw per frame (driver stats), mean / p95',
+      `${f2(a.work)} ms / ${f2(a.workP95)} ms = **${pct(a.work / FRAME_MS)}** / ${pct(a.workP95 / FRAME_MS)} of 16.7 ms`, '< 10 %');
+    row(A, 'of which integrate / draw', `${f2(a.integrate)} ms / ${f2(a.draw)} ms`);
+    row(A, 'main thread busy (CDP TaskDuration) / of it script', `${pct(a.busy)} / ${pct(a.script)}`);
+    row(A, 'long tasks (> 50 ms)', a.longTaskSupported ? `${a.longTasks.length} (${f1(a.longTotal)} ms)` : 'not reported', '0');
+    row(A, 'frame rate (rAF)', `${f1(a.frames.fps)} fps = ${rel(a.frames.fps)} of ceiling; p95 interval ${f1(a.frames.p95)} ms, ${a.frames.missed} missed`);
+    row(A, 'steps/s achieved', `${int(a.stepsPerSecond)} (requested ${int(a.targetRate)})`, '≈ 2000');
+    const B = 'b. eq. 7, speed 50 (time, phase, spectrum)';
+    row(B, 'frame rate (rAF)', `**${f1(b.frames.fps)} fps** = ${rel(b.frames.fps)} of ceiling; p95 interval ${f1(b.frames.p95)} ms, ${b.frames.missed} missed`, '60 fps');
+    row(B, 'steps/s achieved', `**${int(b.stepsPerSecond)}** (requested ${int(b.targetRate)}; pace ${pct(b.pace)})`, '≥ 100 000');
+    row(B, 'integrate + draw per frame, mean / p95', `${f2(b.work)} ms / ${f2(b.workP95)} ms (integrate ${f2(b.integrate)}, draw ${f2(b.draw)})`);
+    row(B, 'main thread busy / long tasks', `${pct(b.busy)} / ${b.longTaskSupported ? `${b.longTasks.length} (${f1(b.longTotal)} ms)` : '–'}`);
+    for (const [label, c] of [['c. beam of 1000, trajectory view', c1], ['c. beam of 1000, trajectory + time views', c2]]) {
+      row(label, 'frame rate (rAF)', `**${f1(c.frames.fps)} fps** = ${rel(c.frames.fps)} of ceiling; p95 interval ${f1(c.frames.p95)} ms, ${c.frames.missed} missed`, '≥ 30 fps');
+      row(label, 'steps/s achieved (per particle)', `${int(c.stepsPerSecond)} (requested ${int(c.targetRate)}; pace ${pct(c.pace)}) = ${int(c.stepsPerSecond * 1000)} particle-steps/s`);
+      row(label, 'integrate + draw per frame, mean / p95', `${f2(c.work)} ms / ${f2(c.workP95)} ms (integrate ${f2(c.integrate)}, draw ${f2(c.draw)})`);
+      row(label, 'main thread busy / long tasks', `${pct(c.busy)} / ${c.longTaskSupported ? `${c.longTasks.length} (${f1(c.longTotal)} ms)` : '–'}`);
+      if (c.error) row(label, 'stopped', c.error);
+    }
+    for (const [label, s] of [['a', a], ['b', b], ['c (trajectory)', c1], ['c (trajectory + time)', c2]]) {
+      if (s.error || !s.playing) log(`warning: scenario ${label} was not playing at the end${s.error ? `: ${s.error}` : ''}`);
+    }
+    print();
+    print('d. JavaScript per page, gzip (zlib level 9) of each JS response, cumulative:');
+    print();
+    print('| Page | Cells | First load | + editor (focus a cell) | + parser (run an edited cell) |');
+    print('|---|---|---|---|---|');
+    for (const p of pages) {
+      const cellText = (s) => (s ? `${kb(s.bytes)} (${s.files} files)` : '—');
+      print(`| \`${p.path}\` | ${p.cells} | ${kb(p.first.bytes)} (${p.first.files} files) | ${cellText(p.editor)} | ${cellText(p.parser)} |`);
+    }
+    print();
+    print(`Run took ${((Date.now() - started) / 1000).toFixed(0)} s.`);
+  } finally {
+    await browser.close();
+    await server.close();
+  }
+  process.stdout.write(`${out.join('\n')}\n`);
+}
+
+main().catch((error) => {
+  process.stderr.write(`bench:browser failed: ${error?.stack ?? error}\n`);
+  process.exitCode = 1;
+});

@@ -1,0 +1,153 @@
+/**
+ * /adiabatic-invariants/: the two theory checks (the first-order wobble of I
+ * under the paper's slow ramp, and the sudden limit of a fast ramp) against
+ * formulas evaluated here; the simulators draw; the ramp-rate sweep fills its
+ * figure; editing the ramp rate updates the first check, which still agrees.
+ */
+import assert from 'node:assert/strict';
+import { after, before, test } from 'node:test';
+import { cell, openChapter, openSite, typeIntoCell } from './fixture.mjs';
+
+/** @type {Awaited<ReturnType<typeof openSite>>} */
+let site;
+/** @type {import('playwright-core').Page} */
+let page;
+/** @type {string[]} */
+let problems;
+
+/** Widgets the page makes: two simulators (each with its views), equations, two theory checks. */
+const EXPECTED = { simulator: 2, equations: 1, 'theory-check': 2 };
+
+async function widgetsReady() {
+  await page.waitForFunction(
+    (expected) => {
+      const all = [...document.querySelectorAll('[data-widget]')];
+      const count = (kind) => all.filter((w) => w.dataset.widget === kind).length;
+      return Object.entries(expected).every(([kind, n]) => count(kind) >= n) && all.every((w) => w.hasAttribute('data-ready'));
+    },
+    EXPECTED,
+    { timeout: 30_000 },
+  );
+}
+
+before(async () => {
+  site = await openSite();
+  ({ page, problems } = await openChapter(site, '/adiabatic-invariants/'));
+  await widgetsReady();
+});
+after(async () => {
+  await page?.close();
+  await site?.close();
+});
+
+/** The theory check in cell `id`, its numbers parsed. */
+async function checkIn(id) {
+  const widget = cell(page, id).locator('[data-widget="theory-check"]');
+  await widget.waitFor({ timeout: 30_000 });
+  return widget.evaluate((w) => ({
+    ...w.dataset,
+    measured: Number(w.dataset.measured),
+    predicted: Number(w.dataset.predicted),
+    tolerance: Number(w.dataset.tolerance),
+  }));
+}
+
+/** The agreement the page claims, recomputed from its own numbers. */
+function assertAgrees(check) {
+  assert.equal(check.agrees, 'true', JSON.stringify(check));
+  const difference = Math.abs(check.measured - check.predicted);
+  const error = check.relative === 'true' ? difference / Math.abs(check.predicted) : difference;
+  assert.ok(error <= check.tolerance, JSON.stringify(check));
+}
+
+/**
+ * First-order adiabatic theory for ω = ω0 + εt from (q0, p0): the largest relative departure of I
+ * from I0 is (|ε|/2)(1/ω_min² + |q0 p0|/(I0 ω0²)), with I0 = H/ω0.
+ */
+function wobble({ omega0, epsilon, q0, p0, T = 60 }) {
+  const I0 = (p0 ** 2 / 2 + (omega0 ** 2 * q0 ** 2) / 2) / omega0;
+  const omegaMin = Math.min(omega0, omega0 + epsilon * T);
+  return {
+    predicted: (Math.abs(epsilon) / 2) * (1 / omegaMin ** 2 + Math.abs(q0 * p0) / (I0 * omega0 ** 2)),
+    tolerance: ((2 * Math.PI + 2) * Math.abs(epsilon)) / omegaMin ** 2,
+  };
+}
+
+test('both theory checks agree with formulas computed here, and the plots are drawn', async () => {
+  const slow = await checkIn('slowCheck');
+  assertAgrees(slow);
+  assert.equal(slow.relative, 'true');
+  const expected = wobble({ omega0: 4, epsilon: 0.05, q0: 1, p0: 0 });
+  assert.ok(Math.abs(slow.predicted - expected.predicted) < 1e-15, `page ${slow.predicted}, test ${expected.predicted}`);
+  assert.ok(Math.abs(slow.tolerance - expected.tolerance) < 1e-15);
+  // The first-order formula is far better than its allowance: within 0.1 % of the measured wobble.
+  assert.ok(Math.abs(slow.measured / slow.predicted - 1) < 1e-3, JSON.stringify(slow));
+
+  const fast = await checkIn('fastCheck');
+  assertAgrees(fast);
+  assert.equal(fast.relative, 'false');
+  const [w0, w1, tau] = [4, 8, 0.05];
+  assert.equal(fast.predicted, (w1 / w0 + w0 / w1) / 2 - 1); // the sudden limit, 1/4
+  const tauSquared = (((w1 - w0) ** 2 * (w0 ** 2 + 4 * w0 * w1 + w1 ** 2)) / (36 * w0 * w1)) * tau ** 2;
+  assert.ok(Math.abs(fast.tolerance - 1.5 * tauSquared) < 1e-15);
+  // The departure from the sudden limit is the τ² term, to within a few per cent of it.
+  assert.ok(Math.abs(fast.predicted - fast.measured - tauSquared) < 0.05 * tauSquared, JSON.stringify(fast));
+
+  const drawn = await page.$$eval('[data-widget="simulator"]', (simulators) =>
+    simulators.map((simulator) => {
+      const counts = [...simulator.querySelectorAll('canvas')].map((canvas) => {
+        if (!canvas.width || !canvas.height) return 0;
+        const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
+        let differ = 0;
+        for (let i = 0; i < data.length; i += 4) {
+          if (data[i + 3] > 0 && (data[i] !== data[0] || data[i + 1] !== data[1] || data[i + 2] !== data[2] || data[i + 3] !== data[3])) differ++;
+        }
+        return differ;
+      });
+      return Math.max(0, ...counts);
+    }),
+  );
+  assert.equal(drawn.length, 2);
+  for (const pixels of drawn) assert.ok(pixels > 500, `a simulator drew ${pixels} pixels`);
+
+  const equations = await page.locator('[data-widget="equations"] .katex').count();
+  assert.ok(equations > 0, 'H is typeset');
+  assert.deepEqual(problems, []);
+});
+
+test('the sweep over ramp rates fills its figure: linear ramp ∝ ε, smooth ramp exponentially small', async () => {
+  // 17 linear-ramp points and 16 smooth-ramp points, drawn as the sweep proceeds
+  const figure = 'svg[aria-label="Change of the action against the ramp rate"]';
+  await page.waitForFunction((selector) => document.querySelectorAll(`${selector} circle`).length === 17 + 16, figure, {
+    timeout: 20_000,
+  });
+  const points = await page.$$eval(`${figure} circle`, (circles) => circles.map((c) => [Number(c.getAttribute('cx')), Number(c.getAttribute('cy'))]));
+  // SVG y grows downwards: the linear ramp's change grows with ε (rises to the right) ...
+  const linear = points.slice(0, 17);
+  assert.ok(linear[16][1] < linear[0][1] - 100, JSON.stringify(linear));
+  // ... and the smooth ramp's first point lies far below the linear ramp's at a similar rate
+  const smooth = points.slice(17);
+  assert.ok(smooth[0][1] > linear[9][1] + 150, `smooth ${smooth[0]}, linear ${linear[9]}`);
+  assert.deepEqual(problems, []);
+});
+
+test('editing the ramp rate re-runs the first check, which still agrees', async () => {
+  const before = await checkIn('slowCheck');
+  await typeIntoCell(page, 'params', 'params = ({omega0: 4, epsilon: 0.2})');
+  await page.waitForFunction(
+    (old) => {
+      const w = document.querySelector('[data-cell="slowCheck"] [data-widget="theory-check"]');
+      return w && w.dataset.predicted !== old;
+    },
+    before.predicted.toString(),
+    { timeout: 20_000 },
+  );
+  const after = await checkIn('slowCheck');
+  assertAgrees(after);
+  const expected = wobble({ omega0: 4, epsilon: 0.2, q0: 1, p0: 0 });
+  assert.ok(Math.abs(after.predicted - expected.predicted) < 1e-15, `page ${after.predicted}, test ${expected.predicted}`);
+  assert.ok(after.measured > 3.5 * before.measured, 'the wobble grows with ε');
+  await widgetsReady();
+  assert.deepEqual(problems, []);
+  await cell(page, 'params').locator('[data-cell-reset]').click();
+});

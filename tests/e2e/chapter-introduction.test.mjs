@@ -1,0 +1,182 @@
+/**
+ * /introduction/: the paper's default model in a simulator with every widget
+ * kind, its two theory checks, Space on a focused simulator, and a CSV
+ * download that matches `phasebook simulate` for the same model.
+ */
+import assert from 'node:assert/strict';
+import { execFile } from 'node:child_process';
+import { readFile } from 'node:fs/promises';
+import { fileURLToPath } from 'node:url';
+import { promisify } from 'node:util';
+import { after, before, test } from 'node:test';
+import { cell, openChapter, openSite, typeIntoCell } from './fixture.mjs';
+
+const ROOT = fileURLToPath(new URL('../../', import.meta.url));
+const H = 'p^2/2 + omega^2*(1 + u*cos(gamma*t))*q^2/2 - f*q*cos(kappa*t+beta)';
+const PARAMS = { u: 0.3, gamma: 21.7, beta: 0.2, kappa: 8, omega: 10, f: 20 };
+const DT = 5e-4;
+const EVERY = 1;
+/** The interval typed into the data panel. */
+const T0 = 0;
+const T1 = 1;
+/** Rows with T0 ≤ t ≤ T1, each at t = steps·dt as the core computes it, and the last of their times. */
+const rowTimes = [];
+for (let i = 0; i * EVERY * DT <= T1; i++) if (i * EVERY * DT >= T0) rowTimes.push(i * EVERY * DT);
+const LAST_T = rowTimes[rowTimes.length - 1];
+
+const WIDGETS = '[data-widget]';
+const simulatorIn = (page, id) => cell(page, id).locator('[data-widget="simulator"]');
+
+/** @type {Awaited<ReturnType<typeof openSite>>} */
+let site;
+/** @type {import('playwright-core').Page} */
+let page;
+/** @type {string[]} */
+let problems;
+/** The CLI's output for the same model and interval, started at once: it takes seconds to start. */
+let cli;
+
+before(async () => {
+  const args = ['bin/phasebook.mjs', 'simulate', '--hamiltonian', H, '--dof', '1', '--initial', '2,0'];
+  for (const [name, value] of Object.entries(PARAMS)) args.push('--param', `${name}=${value}`);
+  args.push('--dt', String(DT), '--t-end', String(LAST_T), '--every', String(EVERY));
+  cli = promisify(execFile)(process.execPath, args, { cwd: ROOT, maxBuffer: 1 << 26 });
+  cli.catch(() => {}); // awaited in its test
+  site = await openSite();
+  ({ page, problems } = await openChapter(site, '/introduction/'));
+  await page.waitForFunction(
+    (selector) => [...document.querySelectorAll(selector)].every((w) => w.hasAttribute('data-ready')),
+    WIDGETS,
+    { timeout: 30_000 },
+  );
+});
+after(async () => {
+  await page?.close();
+  await site?.close();
+});
+
+test('every widget kind is on the page, ready, and has drawn', async () => {
+  const kinds = await page.$$eval(WIDGETS, (all) => all.map((w) => w.dataset.widget));
+  for (const kind of ['simulator', 'time-plot', 'phase-portrait', 'spectrum', 'trajectory', 'theory-check', 'equations']) {
+    assert.ok(kinds.includes(kind), `no ${kind} widget; found ${kinds.join(', ')}`);
+  }
+  // Three simulators: the default model, the Lissajous figure, the batch; each with controls and a data panel.
+  for (const id of ['sim', 'lissajous', 'batch']) {
+    const root = simulatorIn(page, id);
+    assert.equal(await root.count(), 1, `simulator in ${id}`);
+    assert.ok(await root.locator('.pb-transport button').first().isVisible());
+    assert.ok(await root.locator('.pb-data').getByRole('button', { name: 'Download CSV' }).isVisible());
+  }
+  assert.equal(await simulatorIn(page, 'batch').evaluate((el) => el.simulator.simulation.count), 9);
+  assert.deepEqual(await simulatorIn(page, 'sim').evaluate((el) => el.simulator.simulation.record.columns), ['t', 'q', 'p', 'H']);
+  // The spectrum compares its strongest peak with the drive frequency it marks.
+  assert.match((await simulatorIn(page, 'sim').locator('[data-widget="spectrum"]').textContent()) ?? '', /drive κ\/2π/);
+  // H typeset from the model.
+  assert.ok((await page.locator('[data-widget="equations"] .katex').count()) > 0);
+
+  // Every plot canvas has drawn something besides its background.
+  const drawn = await page.$$eval('[data-widget="time-plot"], [data-widget="phase-portrait"], [data-widget="spectrum"], [data-widget="trajectory"]', (plots) =>
+    plots.map((plot) => {
+      const counts = [...plot.querySelectorAll('canvas')].map((canvas) => {
+        if (!canvas.width || !canvas.height) return 0;
+        const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
+        let differ = 0;
+        for (let i = 0; i < data.length; i += 4) {
+          if (data[i + 3] > 0 && (data[i] !== data[0] || data[i + 1] !== data[1] || data[i + 2] !== data[2] || data[i + 3] !== data[3])) differ++;
+        }
+        return differ;
+      });
+      return { kind: plot.dataset.widget, pixels: Math.max(0, ...counts) };
+    }),
+  );
+  assert.equal(drawn.length, 7, JSON.stringify(drawn));
+  for (const { kind, pixels } of drawn) assert.ok(pixels > 500, `${kind} drew ${pixels} pixels`);
+  assert.deepEqual(problems, []);
+});
+
+/** The theory checks' data attributes, as numbers. */
+const checks = () =>
+  page.$$eval('[data-widget="theory-check"]', (all) =>
+    all.map((w) => ({ ...w.dataset, measured: +w.dataset.measured, predicted: +w.dataset.predicted, tolerance: +w.dataset.tolerance })),
+  );
+
+function assertAgrees(check) {
+  assert.equal(check.agrees, 'true', JSON.stringify(check));
+  assert.equal(check.relative, 'false');
+  assert.ok(Math.abs(check.measured - check.predicted) <= check.tolerance, JSON.stringify(check));
+}
+
+test('the theory checks agree: the drive line at κ/2π, and the 16× error ratio of RK 3/8', async () => {
+  const [line, order] = await checks();
+  assertAgrees(line);
+  assert.ok(Math.abs(line.predicted - 8 / (2 * Math.PI)) < 1e-12);
+  assert.ok(Math.abs(line.tolerance - 0.03 / 40) < 1e-15);
+  assertAgrees(order);
+  assert.equal(order.predicted, 16);
+  assert.equal(order.tolerance, 1);
+});
+
+test('Space plays and pauses the simulator that has focus', async () => {
+  const sim = simulatorIn(page, 'sim');
+  const playing = () => sim.evaluate((el) => el.simulator.driver.playing);
+  assert.equal(await playing(), true);
+  await sim.focus();
+  await page.keyboard.press('Space');
+  assert.equal(await playing(), false);
+  await page.keyboard.press('Space');
+  assert.equal(await playing(), true);
+  assert.equal(await sim.getByRole('button', { name: 'Pause' }).count(), 1);
+});
+
+test('the CSV download has the header, the rows of the interval, and the CLI’s numbers', async (t) => {
+  const sim = simulatorIn(page, 'sim');
+  await page.waitForFunction((el) => el.simulator.simulation.t > 1.2, await sim.elementHandle(), { timeout: 20_000 });
+  await sim.locator('input[aria-label^="Export from time t0"]').fill(String(T0));
+  await sim.locator('input[aria-label^="Export to time t1"]').fill(String(T1));
+  const [download] = await Promise.all([page.waitForEvent('download'), sim.getByRole('button', { name: 'Download CSV' }).click()]);
+  const csv = await readFile(await download.path(), 'utf8');
+  const lines = csv.trimEnd().split('\n');
+  assert.equal(lines[0], 't,q,p,H');
+  assert.equal(lines.length - 1, rowTimes.length);
+  assert.equal(Number(lines[1].split(',')[0]), T0);
+  assert.equal(Number(lines.at(-1).split(',')[0]), LAST_T);
+  // The same core, dt and every give the same numbers. They are not always bit-identical: the
+  // browser's Math.cos (and exp, log, …) may round differently from Node's in the last bit, so the
+  // comparison allows a few units in the last place of each column's scale; times are exact.
+  const { stdout } = await cli;
+  const reference = stdout.trimEnd().split('\n');
+  assert.equal(reference[0], lines[0]);
+  assert.equal(reference.length, lines.length);
+  const rows = (text) => text.slice(1).map((line) => line.split(',').map(Number));
+  const [mine, theirs] = [rows(lines), rows(reference)];
+  const scale = [0, 1, 2, 3].map((c) => Math.max(...mine.map((r) => Math.abs(r[c]))));
+  let identical = 0;
+  mine.forEach((row, i) => {
+    assert.equal(row[0], theirs[i][0], `t of row ${i + 1}`);
+    row.forEach((value, c) => {
+      if (value === theirs[i][c]) identical++;
+      else assert.ok(Math.abs(value - theirs[i][c]) <= 4 * Number.EPSILON * scale[c], `row ${i + 1} column ${c}: ${value} vs ${theirs[i][c]}`);
+    });
+  });
+  t.diagnostic(`${identical} of ${4 * mine.length} values bit-identical to the CLI's`);
+  assert.ok(identical >= 0.9 * 4 * mine.length, `only ${identical} of ${4 * mine.length} values identical`);
+  assert.deepEqual(problems, []);
+});
+
+test('editing a parameter re-runs the checks; the drive line follows κ', async () => {
+  await typeIntoCell(page, 'params', 'params = ({u: 0.3, gamma: 21.7, beta: 0.2, kappa: 5, omega: 10, f: 20})');
+  const expected = 5 / (2 * Math.PI);
+  await page.waitForFunction(
+    (f) => Math.abs(Number(document.querySelector('[data-widget="theory-check"]')?.dataset.predicted) - f) < 1e-12,
+    expected,
+    { timeout: 20_000 },
+  );
+  await page.waitForFunction(() => document.querySelectorAll('[data-widget="theory-check"]').length === 2, null, { timeout: 20_000 });
+  const [line, order] = await checks();
+  assertAgrees(line);
+  assert.ok(Math.abs(line.predicted - expected) < 1e-12);
+  assertAgrees(order);
+  await page.waitForFunction(() => document.querySelector('[data-cell="sim"] [data-widget="simulator"]')?.hasAttribute('data-ready'), null, { timeout: 30_000 });
+  assert.equal(await simulatorIn(page, 'sim').evaluate((el) => el.simulator.model.params[3]), 5);
+  assert.deepEqual(problems, []);
+});

@@ -1,0 +1,165 @@
+/**
+ * /parametric-resonance/: the growth rate measured in the page against the
+ * first-order formula and against a Floquet multiplier this test computes
+ * itself; the stability chart, whose click sets γ and u in its simulator.
+ */
+import assert from 'node:assert/strict';
+import { after, before, test } from 'node:test';
+import { cell, openChapter, openSite, typeIntoCell } from './fixture.mjs';
+
+const WIDGETS = '[data-widget]';
+
+/** Landau & Lifshitz §27: s = ½√((uω/2)² − (γ − 2ω)²) inside the band, 0 outside. */
+function firstOrder({ u, gamma, omega }) {
+  const half = (u * omega) / 2;
+  const epsilon = gamma - 2 * omega;
+  return Math.abs(epsilon) < half ? 0.5 * Math.sqrt(half * half - epsilon * epsilon) : 0;
+}
+
+/**
+ * The Floquet growth rate of q̈ + ω²(1 + u cos γt) q = 0, computed here independently of the
+ * page: the monodromy matrix from the classical Runge–Kutta method, s = ln|λ_max|/T.
+ */
+function floquetGrowth({ u, gamma, omega }, steps = 4000) {
+  const T = (2 * Math.PI) / gamma;
+  const h = T / steps;
+  const rate = (t, q, p) => [p, -omega * omega * (1 + u * Math.cos(gamma * t)) * q];
+  const advance = ([q, p]) => {
+    for (let i = 0; i < steps; i++) {
+      const t = i * h;
+      const k1 = rate(t, q, p);
+      const k2 = rate(t + h / 2, q + (h / 2) * k1[0], p + (h / 2) * k1[1]);
+      const k3 = rate(t + h / 2, q + (h / 2) * k2[0], p + (h / 2) * k2[1]);
+      const k4 = rate(t + h, q + h * k3[0], p + h * k3[1]);
+      q += (h / 6) * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0]);
+      p += (h / 6) * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1]);
+    }
+    return [q, p];
+  };
+  const trace = advance([1, 0])[0] + advance([0, 1])[1];
+  const half = Math.abs(trace) / 2;
+  return half > 1 ? Math.log(half + Math.sqrt(half * half - 1)) / T : 0;
+}
+
+/** @type {Awaited<ReturnType<typeof openSite>>} */
+let site;
+/** @type {import('playwright-core').Page} */
+let page;
+/** @type {string[]} */
+let problems;
+
+const allReady = () =>
+  page.waitForFunction(
+    (selector) => [...document.querySelectorAll(selector)].every((w) => w.hasAttribute('data-ready')),
+    WIDGETS,
+    { timeout: 30_000 },
+  );
+
+before(async () => {
+  site = await openSite();
+  ({ page, problems } = await openChapter(site, '/parametric-resonance/'));
+  await allReady();
+});
+after(async () => {
+  await page?.close();
+  await site?.close();
+});
+
+const checks = () =>
+  page.$$eval('[data-widget="theory-check"]', (all) =>
+    all.map((w) => ({ ...w.dataset, measured: +w.dataset.measured, predicted: +w.dataset.predicted, tolerance: +w.dataset.tolerance })),
+  );
+
+function assertAgrees(check) {
+  assert.equal(check.agrees, 'true', JSON.stringify(check));
+  assert.equal(check.relative, 'false');
+  assert.ok(Math.abs(check.measured - check.predicted) <= check.tolerance, JSON.stringify(check));
+}
+
+function assertChecks([formula, exact], params) {
+  const s = firstOrder(params);
+  assertAgrees(formula);
+  assert.ok(Math.abs(formula.predicted - s) < 1e-12, `first-order s: page ${formula.predicted}, test ${s}`);
+  assert.ok(Math.abs(formula.tolerance - (0.12 * s + 0.01)) < 1e-12);
+  assertAgrees(exact);
+  const floquet = floquetGrowth(params);
+  assert.ok(Math.abs(exact.predicted - floquet) < 1e-6 * floquet, `Floquet s: page ${exact.predicted}, test ${floquet}`);
+  assert.equal(exact.tolerance, 0.002);
+}
+
+test('the page loads with its widgets ready and drawn, and both growth-rate checks agree', async () => {
+  const kinds = await page.$$eval(WIDGETS, (all) => all.map((w) => w.dataset.widget));
+  for (const kind of ['simulator', 'time-plot', 'phase-portrait', 'theory-check', 'stability-chart']) {
+    assert.ok(kinds.includes(kind), `no ${kind} widget; found ${kinds.join(', ')}`);
+  }
+  const params = { u: 0.3, gamma: 21.3, omega: 10 };
+  assertChecks(await checks(), params);
+  // the paper's example: inside the band, s ≈ 0.374 to first order, 0.346 exactly
+  assert.ok(Math.abs(firstOrder(params) - 0.3741657) < 1e-6);
+
+  const drawn = await page.$$eval('[data-widget="time-plot"], [data-widget="phase-portrait"], [data-widget="stability-chart"]', (plots) =>
+    plots.map((plot) => {
+      const counts = [...plot.querySelectorAll('canvas')].map((canvas) => {
+        if (!canvas.width || !canvas.height) return 0;
+        const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
+        let differ = 0;
+        for (let i = 0; i < data.length; i += 4) {
+          if (data[i + 3] > 0 && (data[i] !== data[0] || data[i + 1] !== data[1] || data[i + 2] !== data[2] || data[i + 3] !== data[3])) differ++;
+        }
+        return differ;
+      });
+      return { kind: plot.dataset.widget, pixels: Math.max(0, ...counts) };
+    }),
+  );
+  assert.equal(drawn.length, 4, JSON.stringify(drawn));
+  for (const { kind, pixels } of drawn) assert.ok(pixels > 500, `${kind} drew ${pixels} pixels`);
+  // The chart found the tongue: between the first-order boundaries, whose width uω grows from 0 to 10
+  // across the chart's 10 units of γ, lies half of the chart.
+  const unstable = Number(await page.locator('[data-widget="stability-chart"]').getAttribute('data-unstable'));
+  assert.ok(unstable > 0.45 * 7200 && unstable < 0.55 * 7200, `unstable points: ${unstable}`);
+  assert.deepEqual(problems, []);
+});
+
+test('clicking the stability chart sets γ and u in the simulator under it', async () => {
+  const canvas = page.locator('[data-widget="stability-chart"] canvas');
+  const box = await canvas.boundingBox();
+  const explorer = cell(page, 'explorer').locator('[data-widget="simulator"]');
+  const params = () =>
+    explorer.evaluate((el) => {
+      const { paramNames, params } = el.simulator.model;
+      return Object.fromEntries(paramNames.map((name, i) => [name, params[i]]));
+    });
+  assert.deepEqual(await params(), { u: 0.3, gamma: 21.3, beta: 0.2, kappa: 8, omega: 10, f: 0 });
+  // The plot area is inset by the axes' margins: 50 px left, 12 right, 24 top, 38 bottom.
+  const at = (x, y) => ({ gamma: 15 + (10 * (x - 50)) / (box.width - 62), u: (24 + (box.height - 62) - y) / (box.height - 62) });
+  for (const [x, y] of [
+    [50 + 0.5 * (box.width - 62), 24 + 0.2 * (box.height - 62)],
+    [50 + 0.9 * (box.width - 62), 24 + 0.7 * (box.height - 62)],
+  ]) {
+    await canvas.click({ position: { x, y } });
+    const chosen = await params();
+    const expected = at(x, y);
+    assert.ok(Math.abs(chosen.gamma - expected.gamma) < 0.05, `γ ${chosen.gamma}, expected ${expected.gamma}`);
+    assert.ok(Math.abs(chosen.u - expected.u) < 0.01, `u ${chosen.u}, expected ${expected.u}`);
+    assert.match((await cell(page, 'chosen').locator('[data-cell-output]').textContent()) ?? '', new RegExp(`γ = ${chosen.gamma.toFixed(2)}, u = ${chosen.u.toFixed(2)}`));
+  }
+  // The last point, γ ≈ 24, u ≈ 0.3, is far outside the tongue: the explorer restarted there.
+  assert.ok(await explorer.evaluate((el) => el.simulator.simulation.t < 5));
+  assert.deepEqual(problems, []);
+});
+
+test('editing u re-runs both checks, which still agree', async () => {
+  await typeIntoCell(page, 'params', 'params = ({u: 0.4, gamma: 21.3, beta: 0.2, kappa: 8, omega: 10, f: 0})');
+  const params = { u: 0.4, gamma: 21.3, omega: 10 };
+  await page.waitForFunction(
+    (s) => {
+      const all = document.querySelectorAll('[data-widget="theory-check"]');
+      return all.length === 2 && Math.abs(Number(all[0].dataset.predicted) - s) < 1e-12 && Math.abs(Number(all[1].dataset.predicted) - 0.7338) < 1e-3;
+    },
+    firstOrder(params),
+    { timeout: 20_000 },
+  );
+  assertChecks(await checks(), params);
+  await allReady();
+  assert.deepEqual(problems, []);
+});
