@@ -30,9 +30,17 @@ function lazyChunk(id) {
  */
 const outDir = process.env.PHASEBOOK_OUT_DIR;
 
+/**
+ * PHASEBOOK_BASE serves the book under a sub-path, e.g. `/phasebook/` for a
+ * GitHub project site; unset, the book lives at the root of its host. Links
+ * in src/ are built on import.meta.env.BASE_URL so that they follow it.
+ */
+const base = process.env.PHASEBOOK_BASE || undefined;
+
 export default defineConfig({
   site: 'http://localhost:4321',
   ...(outDir ? { outDir } : {}),
+  ...(base ? { base } : {}),
   output: 'static',
   trailingSlash: 'always',
   build: { format: 'directory' },

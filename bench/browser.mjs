@@ -11,7 +11,8 @@
  *    a 16.7 ms frame spent integrating and drawing, from the driver's own
  *    stats, beside the main thread's busy share and the long tasks;
  * b. the same model at speed 50 (100 000 steps/s): frame rate and steps/s;
- * c. the paper's scattered beam (section 7.3) with 1000 particles: frame rate;
+ * c. the paper's scattered beam (section 7.3) with 1000 particles: frame rate
+ *    (trajectory view; with the time plot; with the full trail);
  * d. per-page JavaScript (gzip) on first load, after the editor loads, and
  *    after the cell parser loads.
  *
@@ -21,7 +22,7 @@
  */
 import { spawnSync } from 'node:child_process';
 import { existsSync, readdirSync } from 'node:fs';
-import { cpus, totalmem } from 'node:os';
+import { cpus, loadavg, totalmem } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { gzipSync } from 'node:zlib';
@@ -300,8 +301,9 @@ async function pageBytes(context, origin, path) {
 
 // ── main ──────────────────────────────────────────────────────────────────────
 async function main() {
-  const started = Date.now();
   ensureBuilt();
+  const started = Date.now();
+  const loadBefore = loadavg()[0];
   const server = await startServer();
   const browser = await launchBrowser();
   const out = [];
@@ -347,14 +349,27 @@ async function main() {
       options: "{speed: 1, views: ['trajectory', 'time']}",
       expect: { h: BEAM_H, count: 1000, speed: 1 },
     });
+    log('c. the 1000-particle beam, trajectory view with the full trail…');
+    const c3 = await scenario(page, session, {
+      model: BEAM_MODEL,
+      options: "{speed: 1, views: ['trajectory'], trajectory: {trail: 'full'}}",
+      expect: { h: BEAM_H, count: 1000, speed: 1 },
+    });
     await page.close();
 
     log('d. JavaScript per page…');
-    const pages = [];
-    for (const path of sitePages()) {
-      log(`  ${path}`);
-      pages.push(await pageBytes(browser.context, server.origin, path));
-    }
+    // Bytes do not depend on timing, so three pages at a time.
+    const paths = sitePages();
+    const pages = new Array(paths.length);
+    let next = 0;
+    const worker = async () => {
+      while (next < paths.length) {
+        const i = next++;
+        log(`  ${paths[i]}`);
+        pages[i] = await pageBytes(browser.context, server.origin, paths[i]);
+      }
+    };
+    await Promise.all([worker(), worker(), worker()]);
 
     // ── report ──
     const cpu = cpus();
@@ -362,6 +377,8 @@ async function main() {
     print();
     print(`Machine: ${cpu[0]?.model ?? 'unknown CPU'}, ${cpu.length} cores, ${(totalmem() / 2 ** 30).toFixed(1)} GiB; ` +
       `Node ${process.version}; ${version.product} (headless, --disable-gpu).`);
+    print(`Load average (1 min) ${loadBefore.toFixed(2)} before the run, ${loadavg()[0].toFixed(2)} after: ` +
+      `other work on the machine shows up as missed frames and long tasks.`);
     print(`Each scenario: ${WARM_UP_MS / 1000} s warm-up, then ${SECONDS} s measured. Frame budget 16.7 ms (60 Hz).`);
     print();
     print(`Empty-page frame-rate ceiling (rAF on a blank page, 3 s): **${f1(ceiling.fps)} fps** ` +
@@ -384,14 +401,19 @@ async function main() {
     row(B, 'steps/s achieved', `**${int(b.stepsPerSecond)}** (requested ${int(b.targetRate)}; pace ${pct(b.pace)})`, '≥ 100 000');
     row(B, 'integrate + draw per frame, mean / p95', `${f2(b.work)} ms / ${f2(b.workP95)} ms (integrate ${f2(b.integrate)}, draw ${f2(b.draw)})`);
     row(B, 'main thread busy / long tasks', `${pct(b.busy)} / ${b.longTaskSupported ? `${b.longTasks.length} (${f1(b.longTotal)} ms)` : '–'}`);
-    for (const [label, c] of [['c. beam of 1000, trajectory view', c1], ['c. beam of 1000, trajectory + time views', c2]]) {
+    const beams = [
+      ['c. beam of 1000, trajectory view', c1],
+      ['c. beam of 1000, trajectory + time views', c2],
+      ["c. beam of 1000, trajectory view, trail: 'full'", c3],
+    ];
+    for (const [label, c] of beams) {
       row(label, 'frame rate (rAF)', `**${f1(c.frames.fps)} fps** = ${rel(c.frames.fps)} of ceiling; p95 interval ${f1(c.frames.p95)} ms, ${c.frames.missed} missed`, '≥ 30 fps');
       row(label, 'steps/s achieved (per particle)', `${int(c.stepsPerSecond)} (requested ${int(c.targetRate)}; pace ${pct(c.pace)}) = ${int(c.stepsPerSecond * 1000)} particle-steps/s`);
       row(label, 'integrate + draw per frame, mean / p95', `${f2(c.work)} ms / ${f2(c.workP95)} ms (integrate ${f2(c.integrate)}, draw ${f2(c.draw)})`);
       row(label, 'main thread busy / long tasks', `${pct(c.busy)} / ${c.longTaskSupported ? `${c.longTasks.length} (${f1(c.longTotal)} ms)` : '–'}`);
       if (c.error) row(label, 'stopped', c.error);
     }
-    for (const [label, s] of [['a', a], ['b', b], ['c (trajectory)', c1], ['c (trajectory + time)', c2]]) {
+    for (const [label, s] of [['a', a], ['b', b], ...beams]) {
       if (s.error || !s.playing) log(`warning: scenario ${label} was not playing at the end${s.error ? `: ${s.error}` : ''}`);
     }
     print();

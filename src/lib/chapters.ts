@@ -29,7 +29,10 @@ export async function listChapters(): Promise<Chapter[]> {
   return orderChapters(entries);
 }
 
+/** The site's root URL, `/` or the base path it is served under (PHASEBOOK_BASE), ending in `/`. */
+export const HOME: string = import.meta.env.BASE_URL.replace(/\/?$/, '/');
+
 /** Root-absolute URL of a chapter, with the trailing slash the site uses. */
 export function chapterHref(chapter: Chapter): string {
-  return `/${chapter.id}/`;
+  return `${HOME}${chapter.id}/`;
 }

@@ -68,9 +68,21 @@ export function basisLine(window: 'hamming' | 'none', t0: number, duration: numb
   return parts.join(' · ');
 }
 
-/** How the strongest peak compares with the chapter's prediction, e.g. "strongest peak 1.518 vs theory 1.518: +0.01%". */
-export function compareWithTheory(peak: Peak, theory: { frequency: number; label: string }, duration: number): string {
+/**
+ * How a peak compares with the chapter's prediction, e.g. "strongest peak 1.518 vs theory 1.518: +0.01%";
+ * `name` says which peak it is when it is not the strongest (e.g. "peak 2").
+ */
+export function compareWithTheory(peak: Peak, theory: { frequency: number; label: string }, duration: number, name = 'strongest peak'): string {
   const relative = (peak.frequency - theory.frequency) / theory.frequency;
   const percent = `${relative >= 0 ? '+' : '−'}${Math.abs(100 * relative).toFixed(2)}%`;
-  return `strongest peak ${fixed(peak.frequency, frequencyDecimals(duration))} vs ${theory.label}: ${percent}`;
+  return `${name} ${fixed(peak.frequency, frequencyDecimals(duration))} vs ${theory.label}: ${percent}`;
+}
+
+/** The index of the peak nearest a predicted frequency: the one a prediction is about, which need not be the strongest. */
+export function nearestPeak(peaks: readonly Peak[], frequency: number): number {
+  let best = 0;
+  peaks.forEach((p, i) => {
+    if (Math.abs(p.frequency - frequency) < Math.abs(peaks[best].frequency - frequency)) best = i;
+  });
+  return best;
 }

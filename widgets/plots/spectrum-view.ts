@@ -3,7 +3,7 @@ import type { Simulation } from '../core/simulation.ts';
 import type { View } from '../simulator/view.ts';
 import { drawAxes, fontOf } from './draw-axes.ts';
 import { analyse, displaySpectrum, theoryOf } from './spectrum-analysis.ts';
-import { basisLine, compareWithTheory, fixed, frequencyDecimals, peakLine, significant } from './peak-readout.ts';
+import { basisLine, compareWithTheory, fixed, frequencyDecimals, nearestPeak, peakLine, significant } from './peak-readout.ts';
 import { columnsOf } from './plane-columns.ts';
 import { controlRow, selectControl, seriesChoices, type SelectControl } from './spectrum-controls.ts';
 import { drawSpectrum, lastBin, spectrumMappings, type SpectrumPicture, type SpectrumShow } from './spectrum-plot.ts';
@@ -204,10 +204,11 @@ class SpectrumViewImpl implements SpectrumView {
     const strongest = peaks.length ? `; strongest peak at f = ${fixed(peaks[0].frequency, frequencyDecimals(choice.duration))}` : '';
     this.frame.canvas.setAttribute('aria-label', `Frequency spectrum of ${this.series}${strongest}`);
     const t0 = record.time(choice.from);
+    const near = theory && peaks.length ? nearestPeak(peaks, theory.frequency) : 0;
     this.readout.show(
       peaks.map((p) => peakLine(p, choice.duration)),
       basisLine(this.window, t0, choice.duration, choice.samples, choice.stride),
-      theory && peaks.length ? compareWithTheory(peaks[0], theory, choice.duration) : undefined,
+      theory && peaks.length ? compareWithTheory(peaks[near], theory, choice.duration, near === 0 ? 'strongest peak' : `peak ${near + 1}`) : undefined,
       peaks.length ? undefined : `No peaks: nothing completes 1.5 periods within the window (T = ${significant(choice.duration, 3)}).`,
     );
   }

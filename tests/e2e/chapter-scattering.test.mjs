@@ -1,0 +1,150 @@
+/**
+ * /scattering/: the deflection of one particle of the paper's beam against
+ * the exact finite-start orbit (recomputed here from the Laplace–Runge–Lenz
+ * vector) and against Rutherford's formula; the beam's trajectory view draws;
+ * the envelope and deflection figures are made; editing the field strength
+ * re-runs both checks, which still agree.
+ */
+import assert from 'node:assert/strict';
+import { after, before, test } from 'node:test';
+import { cell, openChapter, openSite, typeIntoCell } from './fixture.mjs';
+
+/** @type {Awaited<ReturnType<typeof openSite>>} */
+let site;
+/** @type {import('playwright-core').Page} */
+let page;
+/** @type {string[]} */
+let problems;
+
+const EXPECTED = { simulator: 1, trajectory: 1, equations: 1, 'theory-check': 2 };
+
+async function widgetsReady() {
+  await page.waitForFunction(
+    (expected) => {
+      const all = [...document.querySelectorAll('[data-widget]')];
+      const count = (kind) => all.filter((w) => w.dataset.widget === kind).length;
+      return Object.entries(expected).every(([kind, n]) => count(kind) >= n) && all.every((w) => w.hasAttribute('data-ready'));
+    },
+    EXPECTED,
+    { timeout: 30_000 },
+  );
+}
+
+before(async () => {
+  site = await openSite();
+  ({ page, problems } = await openChapter(site, '/scattering/'));
+  await widgetsReady();
+});
+after(async () => {
+  await page?.close();
+  await site?.close();
+});
+
+const checks = () =>
+  page.$$eval('[data-widget="theory-check"]', (all) =>
+    all.map((w) => ({ ...w.dataset, measured: Number(w.dataset.measured), predicted: Number(w.dataset.predicted), tolerance: Number(w.dataset.tolerance) })),
+  );
+
+function assertAgrees(check) {
+  assert.equal(check.agrees, 'true', JSON.stringify(check));
+  assert.equal(check.relative, 'false');
+  assert.ok(Math.abs(check.measured - check.predicted) <= check.tolerance, JSON.stringify(check));
+}
+
+/**
+ * The exact deflection of a particle of mass m started at (x, y) with momentum (px, py) in
+ * U = α/r, written out here independently of the page: the orbit's axis lies along the
+ * Laplace–Runge–Lenz vector A = p × L + mα r̂, the asymptotes at arccos(1/e) from it, e = |A|/mα.
+ */
+function exactDeflection(x, y, px, py, alpha, m) {
+  const r = Math.hypot(x, y);
+  const L = x * py - y * px;
+  const ax = py * L + (m * alpha * x) / r;
+  const ay = -px * L + (m * alpha * y) / r;
+  const e = Math.hypot(ax, ay) / (m * alpha);
+  const out = Math.atan2(ay, ax) + Math.sign(L) * Math.acos(1 / e);
+  const turn = Math.atan2(px * Math.sin(out) - py * Math.cos(out), px * Math.cos(out) + py * Math.sin(out));
+  return Math.abs(turn);
+}
+
+/** Rutherford: tan(θ/2) = |α|/(2 E b), E = p²/2m. */
+const rutherford = (b, p, alpha, m) => 2 * Math.atan(Math.abs(alpha) / (2 * (p * p) / (2 * m) * b));
+
+/** The first-order shortfall of a start at x0 against Rutherford (the chapter's estimate). */
+function shortfall(x0, b, p, alpha, m) {
+  const E0 = (p * p) / (2 * m);
+  const theta = rutherford(b, p, alpha, m);
+  return (Math.sin(theta) / 2) * Math.log(1 + alpha / (Math.hypot(x0, b) * E0)) + (Math.abs(alpha) * b) / (4 * x0 * x0 * E0);
+}
+
+function assertChecks([orbit, formula], alpha) {
+  const [x0, b, p, m] = [-20, 1.5, 4, 0.5];
+  assertAgrees(orbit);
+  const exact = exactDeflection(x0, b, p, 0, alpha, m);
+  assert.ok(Math.abs(orbit.predicted - exact) < 1e-12, `exact orbit: page ${orbit.predicted}, test ${exact}`);
+  // The run ends ~300 units out; what is left of the turn there is of order 1e-5 rad.
+  assert.ok(orbit.tolerance > 0 && orbit.tolerance < 1e-4, JSON.stringify(orbit));
+  assert.ok(orbit.measured < orbit.predicted, 'the simulated particle has not quite finished turning');
+
+  assertAgrees(formula);
+  const theta = rutherford(b, p, alpha, m);
+  assert.ok(Math.abs(formula.predicted - theta) < 1e-12, `Rutherford: page ${formula.predicted}, test ${theta}`);
+  const expected = 1.5 * Math.abs(shortfall(x0, b, p, alpha, m));
+  assert.ok(Math.abs(formula.tolerance - expected) < 1e-12, `tolerance: page ${formula.tolerance}, test ${expected}`);
+  // the difference is real, not noise: the start at x0 = −20 costs most of the first-order estimate
+  assert.ok(Math.abs(formula.measured - formula.predicted) > 0.5 * (expected / 1.5));
+}
+
+test('both deflection checks agree with formulas computed here; the beam and the figures are drawn', async () => {
+  assertChecks(await checks(), 30);
+  // the paper's particle at b = 1.5: Rutherford's 64.0°, 2.4° more than the simulation
+  const [orbit, formula] = await checks();
+  assert.ok(Math.abs(formula.predicted - 1.117199) < 1e-6);
+  assert.ok(Math.abs(formula.predicted - orbit.measured - 0.0414) < 0.001);
+
+  const pixels = await page.$eval('[data-widget="trajectory"]', (view) =>
+    Math.max(
+      0,
+      ...[...view.querySelectorAll('canvas')].map((canvas) => {
+        if (!canvas.width || !canvas.height) return 0;
+        const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
+        let differ = 0;
+        for (let i = 0; i < data.length; i += 4) {
+          if (data[i + 3] > 0 && (data[i] !== data[0] || data[i + 1] !== data[1] || data[i + 2] !== data[2] || data[i + 3] !== data[3])) differ++;
+        }
+        return differ;
+      }),
+    ),
+  );
+  assert.ok(pixels > 2000, `the trajectory view drew ${pixels} pixels`);
+
+  // The envelope figure: 30 trajectories, the parabola, 30 points where y = 2b, the centre.
+  const envelope = page.locator('svg[aria-label="Trajectories of the beam and the parabola that bounds them"]');
+  await envelope.waitFor({ timeout: 10_000 });
+  assert.equal(await envelope.locator('path').count(), 31);
+  assert.equal(await envelope.locator('circle').count(), 31);
+  // The deflection figures: a dot per particle off the axis.
+  const dots = await page.locator('svg[aria-label="Deflection angle against impact parameter"] circle').count();
+  assert.equal(dots, 29);
+  assert.ok((await page.locator('[data-widget="equations"] .katex').count()) > 0, 'H is typeset');
+  assert.deepEqual(problems, []);
+});
+
+test('editing the field strength re-runs both checks, which still agree', async () => {
+  const [before] = await checks();
+  await typeIntoCell(page, 'params', 'params = ({alpha: 20})');
+  await page.waitForFunction(
+    (old) => {
+      const all = document.querySelectorAll('[data-widget="theory-check"]');
+      return all.length === 2 && [...all].every((w) => w.hasAttribute('data-ready')) && all[0].dataset.predicted !== old && all[1].dataset.predicted !== String(2 * Math.atan(30 / 48));
+    },
+    String(before.predicted),
+    { timeout: 20_000 },
+  );
+  const after = await checks();
+  assertChecks(after, 20);
+  assert.ok(after[0].measured < before.measured, 'a weaker field bends less');
+  await widgetsReady();
+  assert.deepEqual(problems, []);
+  await cell(page, 'params').locator('[data-cell-reset]').click();
+});
