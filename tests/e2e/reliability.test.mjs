@@ -162,12 +162,17 @@ test('a slow H cannot freeze the page: frames keep coming and the speed readout 
   await waitForNewWidget(page, `s.model.route === 'js-stencil'`);
   const start = await widget(page);
   const fps = await rafRate(page, 2000);
-  assert.ok(fps >= 30, `requestAnimationFrame at ${fps.toFixed(1)} fps`);
+  // The same measure on a blank page is the ceiling (60 on an idle machine); a frozen page would give ~0.
+  const blank = await site.context.newPage();
+  await blank.setContent('<!doctype html><title>blank</title>');
+  const ceiling = await rafRate(blank, 1000);
+  await blank.close();
+  assert.ok(fps >= Math.min(30, 0.5 * ceiling), `requestAnimationFrame at ${fps.toFixed(1)} fps; a blank page: ${ceiling.toFixed(1)} fps`);
   await page.waitForFunction((selector) => /behind real time/.test(document.querySelector(`${selector} .pb-speed-text`)?.textContent ?? ''), SIM, { timeout: 5000 });
   const later = await widget(page);
   const behind = /behind real time, (\d+)%/.exec(later.speedText);
   assert.ok(behind && Number(behind[1]) < 90, later.speedText);
-  t.diagnostic(`${fps.toFixed(1)} fps; ${later.speedText}`);
+  t.diagnostic(`${fps.toFixed(1)} fps (blank page ${ceiling.toFixed(1)}); ${later.speedText}`);
   assert.ok(later.t > start.t, 'it still advances');
   // The page answers: a cell runs at once.
   await typeIntoCell(page, 'H0', 'H0 = 1 + 1');
