@@ -92,7 +92,7 @@ test('when the reader leaves the page alone, the editors load once the browser i
   await page.goto(`${site.origin}/introduction/`);
   await cellsReady(page);
   const cells = await page.locator('[data-cell]').count();
-  await page.waitForFunction((count) => document.querySelectorAll('[data-cell] .cm-editor').length === count, cells, { timeout: 15_000 });
+  await page.waitForFunction((count) => document.querySelectorAll('[data-cell] .cm-editor').length === count, cells, { timeout: 60_000 });
   assert.equal(scripts(requests).filter((url) => EDITOR_CHUNK.test(url)).length, 1);
   assert.deepEqual(scripts(requests).filter((url) => PARSER_CHUNK.test(url)), []);
   assert.deepEqual(problems, []);
