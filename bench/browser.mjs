@@ -293,6 +293,7 @@ async function pageBytes(context, origin, path) {
   return {
     path,
     cells,
+    scripts: [...scripts].map(([url, v]) => ({ name: new URL(url).pathname.split('/').pop(), ...v })),
     first: sum(['first']),
     editor: cells > 0 ? sum(['first', 'editor']) : null,
     parser: cells > 0 ? sum(['first', 'editor', 'parser']) : null,
@@ -421,10 +422,25 @@ async function main() {
     print();
     print('| Page | Cells | First load | + editor (focus a cell) | + parser (run an edited cell) |');
     print('|---|---|---|---|---|');
+    const files = (n) => `${n} file${n === 1 ? '' : 's'}`;
     for (const p of pages) {
-      const cellText = (s) => (s ? `${kb(s.bytes)} (${s.files} files)` : '—');
-      print(`| \`${p.path}\` | ${p.cells} | ${kb(p.first.bytes)} (${p.first.files} files) | ${cellText(p.editor)} | ${cellText(p.parser)} |`);
+      const cellText = (s) => (s ? `${kb(s.bytes)} (${files(s.files)})` : '—');
+      print(`| \`${p.path}\` | ${p.cells} | ${kb(p.first.bytes)} (${files(p.first.files)}) | ${cellText(p.editor)} | ${cellText(p.parser)} |`);
     }
+    const big = new Map();
+    for (const p of pages) {
+      for (const script of p.scripts) {
+        if (script.bytes < 20 * 1024) continue;
+        const entry = big.get(script.name) ?? { bytes: script.bytes, stage: script.stage, pages: 0 };
+        entry.pages++;
+        big.set(script.name, entry);
+      }
+    }
+    print();
+    print('Scripts over 20 KB gzip: ' +
+      [...big].sort((x, y) => y[1].bytes - x[1].bytes)
+        .map(([name, e]) => `\`${name}\` ${kb(e.bytes)} (${e.stage === 'first' ? 'first load' : e.stage}, ${e.pages} page${e.pages === 1 ? '' : 's'})`)
+        .join('; ') + '.');
     print();
     print(`Run took ${((Date.now() - started) / 1000).toFixed(0)} s.`);
   } finally {
