@@ -5,6 +5,7 @@ import { SUPPORTED_FUNCTIONS } from './emit.ts';
 import { evaluatorSource, fusedStepper, type RateExpressions } from './fused-stepper.ts';
 import { CONSTANTS, checkName, stateNames } from './names.ts';
 import { latexOf } from './latex.ts';
+import { loadMathjs, type MathJs } from './mathjs.ts';
 
 export interface ExpressionSpec {
   /** H in mathjs syntax, e.g. `p^2/2 + omega0^2*q^2/2 + alpha*q^3` */
@@ -19,12 +20,6 @@ export interface ExpressionSpec {
   original?: string;
 }
 
-type MathJs = typeof import('mathjs');
-let mathjs: Promise<MathJs> | undefined;
-/** mathjs is large, so it is loaded only when a model takes this route. */
-export function loadMathjs(): Promise<MathJs> {
-  return (mathjs ??= import('mathjs'));
-}
 
 /**
  * Builds a model from H as a math expression: exact symbolic partial

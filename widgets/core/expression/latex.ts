@@ -1,6 +1,5 @@
 import type { MathNode } from 'mathjs';
-
-type MathJs = typeof import('mathjs');
+import type { MathJs } from './mathjs.ts';
 
 const GREEK = new Set(
   'alpha beta gamma delta epsilon zeta eta theta iota kappa lambda mu nu xi pi rho sigma tau upsilon phi chi psi omega Gamma Delta Theta Lambda Xi Pi Sigma Upsilon Phi Psi Omega'.split(
