@@ -5,11 +5,10 @@
  * figure; editing the ramp rate updates the first check, which still agrees.
  */
 import assert from 'node:assert/strict';
-import { after, before, test } from 'node:test';
-import { cell, openChapter, openSite, typeIntoCell } from './fixture.mjs';
+import { test } from 'node:test';
+import { assertAgrees, assertDrawn, resetCell, theoryCheckIn, useChapter, widgetsReady } from './chapter-checks.mjs';
+import { typeIntoCell } from './fixture.mjs';
 
-/** @type {Awaited<ReturnType<typeof openSite>>} */
-let site;
 /** @type {import('playwright-core').Page} */
 let page;
 /** @type {string[]} */
@@ -18,47 +17,10 @@ let problems;
 /** Widgets the page makes: two simulators (each with its views), equations, two theory checks. */
 const EXPECTED = { simulator: 2, equations: 1, 'theory-check': 2 };
 
-async function widgetsReady() {
-  await page.waitForFunction(
-    (expected) => {
-      const all = [...document.querySelectorAll('[data-widget]')];
-      const count = (kind) => all.filter((w) => w.dataset.widget === kind).length;
-      return Object.entries(expected).every(([kind, n]) => count(kind) >= n) && all.every((w) => w.hasAttribute('data-ready'));
-    },
-    EXPECTED,
-    { timeout: 30_000 },
-  );
-}
+useChapter('/adiabatic-invariants/', (opened) => ({ page, problems } = opened), { widgets: EXPECTED });
 
-before(async () => {
-  site = await openSite();
-  ({ page, problems } = await openChapter(site, '/adiabatic-invariants/'));
-  await widgetsReady();
-});
-after(async () => {
-  await page?.close();
-  await site?.close();
-});
-
-/** The theory check in cell `id`, its numbers parsed. */
-async function checkIn(id) {
-  const widget = cell(page, id).locator('[data-widget="theory-check"]');
-  await widget.waitFor({ timeout: 30_000 });
-  return widget.evaluate((w) => ({
-    ...w.dataset,
-    measured: Number(w.dataset.measured),
-    predicted: Number(w.dataset.predicted),
-    tolerance: Number(w.dataset.tolerance),
-  }));
-}
-
-/** The agreement the page claims, recomputed from its own numbers. */
-function assertAgrees(check) {
-  assert.equal(check.agrees, 'true', JSON.stringify(check));
-  const difference = Math.abs(check.measured - check.predicted);
-  const error = check.relative === 'true' ? difference / Math.abs(check.predicted) : difference;
-  assert.ok(error <= check.tolerance, JSON.stringify(check));
-}
+/** The theory check in cell `id`, its numbers parsed, once it is there. */
+const checkIn = (id) => theoryCheckIn(page, id, { wait: true });
 
 /**
  * First-order adiabatic theory for ω = ω0 + εt from (q0, p0): the largest relative departure of I
@@ -93,22 +55,7 @@ test('both theory checks agree with formulas computed here, and the plots are dr
   // The departure from the sudden limit is the τ² term, to within a few per cent of it.
   assert.ok(Math.abs(fast.predicted - fast.measured - tauSquared) < 0.05 * tauSquared, JSON.stringify(fast));
 
-  const drawn = await page.$$eval('[data-widget="simulator"]', (simulators) =>
-    simulators.map((simulator) => {
-      const counts = [...simulator.querySelectorAll('canvas')].map((canvas) => {
-        if (!canvas.width || !canvas.height) return 0;
-        const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
-        let differ = 0;
-        for (let i = 0; i < data.length; i += 4) {
-          if (data[i + 3] > 0 && (data[i] !== data[0] || data[i + 1] !== data[1] || data[i + 2] !== data[2] || data[i + 3] !== data[3])) differ++;
-        }
-        return differ;
-      });
-      return Math.max(0, ...counts);
-    }),
-  );
-  assert.equal(drawn.length, 2);
-  for (const pixels of drawn) assert.ok(pixels > 500, `a simulator drew ${pixels} pixels`);
+  await assertDrawn(page, '[data-widget="simulator"]', 2);
 
   const equations = await page.locator('[data-widget="equations"] .katex').count();
   assert.ok(equations > 0, 'H is typeset');
@@ -147,7 +94,7 @@ test('editing the ramp rate re-runs the first check, which still agrees', async 
   const expected = wobble({ omega0: 4, epsilon: 0.2, q0: 1, p0: 0 });
   assert.ok(Math.abs(after.predicted - expected.predicted) < 1e-15, `page ${after.predicted}, test ${expected.predicted}`);
   assert.ok(after.measured > 3.5 * before.measured, 'the wobble grows with ε');
-  await widgetsReady();
+  await widgetsReady(page, EXPECTED);
   assert.deepEqual(problems, []);
-  await cell(page, 'params').locator('[data-cell-reset]').click();
+  await resetCell(page, 'params');
 });

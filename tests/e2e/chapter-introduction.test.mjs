@@ -8,8 +8,9 @@ import { execFile } from 'node:child_process';
 import { readFile } from 'node:fs/promises';
 import { fileURLToPath } from 'node:url';
 import { promisify } from 'node:util';
-import { after, before, test } from 'node:test';
-import { cell, openChapter, openSite, typeIntoCell } from './fixture.mjs';
+import { before, test } from 'node:test';
+import { assertAgrees, assertDrawn, theoryChecks, useChapter } from './chapter-checks.mjs';
+import { cell, typeIntoCell } from './fixture.mjs';
 
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
 const H = 'p^2/2 + omega^2*(1 + u*cos(gamma*t))*q^2/2 - f*q*cos(kappa*t+beta)';
@@ -27,8 +28,6 @@ const LAST_T = rowTimes[rowTimes.length - 1];
 const WIDGETS = '[data-widget]';
 const simulatorIn = (page, id) => cell(page, id).locator('[data-widget="simulator"]');
 
-/** @type {Awaited<ReturnType<typeof openSite>>} */
-let site;
 /** @type {import('playwright-core').Page} */
 let page;
 /** @type {string[]} */
@@ -42,18 +41,8 @@ before(async () => {
   args.push('--dt', String(DT), '--t-end', String(LAST_T), '--every', String(EVERY));
   cli = promisify(execFile)(process.execPath, args, { cwd: ROOT, maxBuffer: 1 << 26 });
   cli.catch(() => {}); // awaited in its test
-  site = await openSite();
-  ({ page, problems } = await openChapter(site, '/introduction/'));
-  await page.waitForFunction(
-    (selector) => [...document.querySelectorAll(selector)].every((w) => w.hasAttribute('data-ready')),
-    WIDGETS,
-    { timeout: 30_000 },
-  );
 });
-after(async () => {
-  await page?.close();
-  await site?.close();
-});
+useChapter('/introduction/', (opened) => ({ page, problems } = opened));
 
 test('every widget kind is on the page, ready, and has drawn', async () => {
   const kinds = await page.$$eval(WIDGETS, (all) => all.map((w) => w.dataset.widget));
@@ -75,43 +64,16 @@ test('every widget kind is on the page, ready, and has drawn', async () => {
   assert.ok((await page.locator('[data-widget="equations"] .katex').count()) > 0);
 
   // Every plot canvas has drawn something besides its background.
-  const drawn = await page.$$eval('[data-widget="time-plot"], [data-widget="phase-portrait"], [data-widget="spectrum"], [data-widget="trajectory"]', (plots) =>
-    plots.map((plot) => {
-      const counts = [...plot.querySelectorAll('canvas')].map((canvas) => {
-        if (!canvas.width || !canvas.height) return 0;
-        const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
-        let differ = 0;
-        for (let i = 0; i < data.length; i += 4) {
-          if (data[i + 3] > 0 && (data[i] !== data[0] || data[i + 1] !== data[1] || data[i + 2] !== data[2] || data[i + 3] !== data[3])) differ++;
-        }
-        return differ;
-      });
-      return { kind: plot.dataset.widget, pixels: Math.max(0, ...counts) };
-    }),
-  );
-  assert.equal(drawn.length, 7, JSON.stringify(drawn));
-  for (const { kind, pixels } of drawn) assert.ok(pixels > 500, `${kind} drew ${pixels} pixels`);
+  await assertDrawn(page, '[data-widget="time-plot"], [data-widget="phase-portrait"], [data-widget="spectrum"], [data-widget="trajectory"]', 7);
   assert.deepEqual(problems, []);
 });
 
-/** The theory checks' data attributes, as numbers. */
-const checks = () =>
-  page.$$eval('[data-widget="theory-check"]', (all) =>
-    all.map((w) => ({ ...w.dataset, measured: +w.dataset.measured, predicted: +w.dataset.predicted, tolerance: +w.dataset.tolerance })),
-  );
-
-function assertAgrees(check) {
-  assert.equal(check.agrees, 'true', JSON.stringify(check));
-  assert.equal(check.relative, 'false');
-  assert.ok(Math.abs(check.measured - check.predicted) <= check.tolerance, JSON.stringify(check));
-}
-
 test('the theory checks agree: the drive line at κ/2π, and the 16× error ratio of RK 3/8', async () => {
-  const [line, order] = await checks();
-  assertAgrees(line);
+  const [line, order] = await theoryChecks(page);
+  assertAgrees(line, { relative: false });
   assert.ok(Math.abs(line.predicted - 8 / (2 * Math.PI)) < 1e-12);
   assert.ok(Math.abs(line.tolerance - 0.03 / 40) < 1e-15);
-  assertAgrees(order);
+  assertAgrees(order, { relative: false });
   assert.equal(order.predicted, 16);
   assert.equal(order.tolerance, 1);
 });
@@ -172,10 +134,10 @@ test('editing a parameter re-runs the checks; the drive line follows κ', async 
     { timeout: 20_000 },
   );
   await page.waitForFunction(() => document.querySelectorAll('[data-widget="theory-check"]').length === 2, null, { timeout: 20_000 });
-  const [line, order] = await checks();
-  assertAgrees(line);
+  const [line, order] = await theoryChecks(page);
+  assertAgrees(line, { relative: false });
   assert.ok(Math.abs(line.predicted - expected) < 1e-12);
-  assertAgrees(order);
+  assertAgrees(order, { relative: false });
   await page.waitForFunction(() => document.querySelector('[data-cell="sim"] [data-widget="simulator"]')?.hasAttribute('data-ready'), null, { timeout: 30_000 });
   assert.equal(await simulatorIn(page, 'sim').evaluate((el) => el.simulator.model.params[3]), 5);
   assert.deepEqual(problems, []);

@@ -5,8 +5,9 @@
  * the live readouts; an edit of k.
  */
 import assert from 'node:assert/strict';
-import { after, before, test } from 'node:test';
-import { openChapter, openSite, typeIntoCell } from './fixture.mjs';
+import { test } from 'node:test';
+import { assertAgrees, assertDrawn, assertLoadsClean, assertNoCellErrors, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
+import { typeIntoCell } from './fixture.mjs';
 
 const INITIAL = [-3, -3, 3, 3, 2, -3, -2, 3];
 
@@ -35,33 +36,14 @@ function elements([x1, y1, x2, y2, px1, py1, px2, py2], k) {
   };
 }
 
-/** @type {Awaited<ReturnType<typeof openSite>>} */
-let site;
 /** @type {import('playwright-core').Page} */
 let page;
 /** @type {string[]} */
 let problems;
 
-const allReady = () =>
-  page.waitForFunction(() => [...document.querySelectorAll('[data-widget]')].every((w) => w.hasAttribute('data-ready')), null, {
-    timeout: 30_000,
-  });
-
-const checks = () =>
-  page.$$eval('[data-widget="theory-check"]', (all) =>
-    all.map((w) => ({ ...w.dataset, measured: +w.dataset.measured, predicted: +w.dataset.predicted, tolerance: +w.dataset.tolerance })),
-  );
-
-function assertAgrees(check) {
-  assert.equal(check.agrees, 'true', JSON.stringify(check));
-  const difference = Math.abs(check.measured - check.predicted);
-  const error = check.relative === 'true' ? difference / Math.abs(check.predicted) : difference;
-  assert.ok(error <= check.tolerance, JSON.stringify(check));
-}
-
 async function assertChecks(k) {
   const orbit = elements(INITIAL, k);
-  const [period, momentum, lenz] = await checks();
+  const [period, momentum, lenz] = await theoryChecks(page);
   for (const check of [period, momentum, lenz]) assertAgrees(check);
   assert.equal(period.relative, 'true');
   assert.ok(Math.abs(period.predicted - orbit.T) < 1e-12 * orbit.T, `${period.predicted} vs ${orbit.T}`);
@@ -73,21 +55,13 @@ async function assertChecks(k) {
   return orbit;
 }
 
-before(async () => {
-  site = await openSite();
-  ({ page, problems } = await openChapter(site, '/kepler/'));
-  await allReady();
-});
-after(async () => {
-  await page?.close();
-  await site?.close();
-});
+useChapter('/kepler/', (opened) => ({ page, problems } = opened));
 
 test('the page loads clean: every cell runs, every widget gets ready, nothing leaves localhost', async () => {
-  assert.equal(await page.locator('[data-cell-error]:visible').count(), 0);
-  assert.equal(await page.locator('[data-widget="theory-check"]').count(), 3);
-  assert.equal(await page.locator('[data-widget="equations"] .katex').count(), 1);
-  assert.deepEqual(problems, []);
+  await assertLoadsClean(page, problems, {
+    '[data-widget="theory-check"]': 3,
+    '[data-widget="equations"] .katex': 1,
+  });
 });
 
 test('the period agrees with Kepler’s third law, T = 2.9395, and L and the direction of A are kept', async () => {
@@ -98,22 +72,7 @@ test('the period agrees with Kepler’s third law, T = 2.9395, and L and the dir
 });
 
 test('the stars have drawn their orbits and the readouts follow the simulation', async () => {
-  const drawn = await page.$$eval('[data-widget="trajectory"], [data-widget="time-plot"]', (plots) =>
-    plots.map((plot) => {
-      const counts = [...plot.querySelectorAll('canvas')].map((canvas) => {
-        if (!canvas.width || !canvas.height) return 0;
-        const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
-        let differ = 0;
-        for (let i = 0; i < data.length; i += 4) {
-          if (data[i + 3] > 0 && (data[i] !== data[0] || data[i + 1] !== data[1] || data[i + 2] !== data[2] || data[i + 3] !== data[3])) differ++;
-        }
-        return differ;
-      });
-      return { kind: plot.dataset.widget, pixels: Math.max(0, ...counts) };
-    }),
-  );
-  assert.equal(drawn.length, 2, JSON.stringify(drawn));
-  for (const { kind, pixels } of drawn) assert.ok(pixels > 500, `${kind} drew ${pixels} pixels`);
+  await assertDrawn(page, '[data-widget="trajectory"], [data-widget="time-plot"]', 2);
 
   // The readout table: its time advances, and the energy and L stay at their initial values.
   const table = page.locator('table:has(caption)');
@@ -139,9 +98,9 @@ test('editing k re-runs the checks, which still agree (k = 400)', async () => {
     T,
     { timeout: 20_000 },
   );
-  await allReady();
+  await widgetsReady(page);
   const orbit = await assertChecks(400);
   assert.ok(Math.abs(orbit.T - 4.5708) < 1e-4);
-  assert.equal(await page.locator('[data-cell-error]:visible').count(), 0);
+  await assertNoCellErrors(page);
   assert.deepEqual(problems, []);
 });

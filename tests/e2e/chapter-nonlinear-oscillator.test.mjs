@@ -5,8 +5,9 @@
  * frequency–amplitude plot; an edit of the amplitude b.
  */
 import assert from 'node:assert/strict';
-import { after, before, test } from 'node:test';
-import { cell, openChapter, openSite, typeIntoCell } from './fixture.mjs';
+import { test } from 'node:test';
+import { assertAgrees, assertDrawn, assertLoadsClean, assertNoCellErrors, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
+import { cell, typeIntoCell } from './fixture.mjs';
 
 const PARAMS = { omega0: 10, alpha: -2, beta: -3 };
 
@@ -46,33 +47,13 @@ function exactOmega({ omega0, alpha, beta }, b) {
   return (2 * Math.PI) / period;
 }
 
-/** @type {Awaited<ReturnType<typeof openSite>>} */
-let site;
 /** @type {import('playwright-core').Page} */
 let page;
 /** @type {string[]} */
 let problems;
 
-const allReady = () =>
-  page.waitForFunction(() => [...document.querySelectorAll('[data-widget]')].every((w) => w.hasAttribute('data-ready')), null, {
-    timeout: 30_000,
-  });
-
-const checks = () =>
-  page.$$eval('[data-widget="theory-check"]', (all) =>
-    all.map((w) => ({ ...w.dataset, measured: +w.dataset.measured, predicted: +w.dataset.predicted, tolerance: +w.dataset.tolerance })),
-  );
-
-/** The check agrees, and the agreement holds when recomputed here from its numbers. */
-function assertAgrees(check) {
-  assert.equal(check.agrees, 'true', JSON.stringify(check));
-  const difference = Math.abs(check.measured - check.predicted);
-  const error = check.relative === 'true' ? difference / Math.abs(check.predicted) : difference;
-  assert.ok(error <= check.tolerance, JSON.stringify(check));
-}
-
 function assertChecks(b) {
-  return checks().then(([frequency, peakVsCrossings]) => {
+  return theoryChecks(page).then(([frequency, peakVsCrossings]) => {
     const { omega, tolerance } = formula(PARAMS, b);
     const exact = exactOmega(PARAMS, b);
     assertAgrees(frequency);
@@ -90,22 +71,14 @@ function assertChecks(b) {
   });
 }
 
-before(async () => {
-  site = await openSite();
-  ({ page, problems } = await openChapter(site, '/nonlinear-oscillator/'));
-  await allReady();
-});
-after(async () => {
-  await page?.close();
-  await site?.close();
-});
+useChapter('/nonlinear-oscillator/', (opened) => ({ page, problems } = opened));
 
 test('the page loads clean: every cell runs, every widget gets ready, nothing leaves localhost', async () => {
-  assert.equal(await page.locator('[data-cell-error]:visible').count(), 0);
-  assert.equal(await page.locator('[data-widget="theory-check"]').count(), 2);
-  assert.equal(await page.locator('[data-widget="simulator"]').count(), 1);
-  assert.equal(await page.locator('[data-widget="equations"] .katex').count(), 1);
-  assert.deepEqual(problems, []);
+  await assertLoadsClean(page, problems, {
+    '[data-widget="theory-check"]': 2,
+    '[data-widget="simulator"]': 1,
+    '[data-widget="equations"] .katex': 1,
+  });
 });
 
 test('the frequency agrees with ω0 + (3β/2ω0 − 15α²/4ω0³)b² = 9.535, and with the exact 9.5389', async () => {
@@ -125,22 +98,7 @@ test('the views have drawn, with the measured peak near the theory marker', asyn
     { timeout: 20_000 },
   );
   // Every plot has drawn something besides its background (on one of its layers).
-  const drawn = await page.$$eval('[data-widget="time-plot"], [data-widget="phase-portrait"], [data-widget="spectrum"]', (plots) =>
-    plots.map((plot) => {
-      const counts = [...plot.querySelectorAll('canvas')].map((canvas) => {
-        if (!canvas.width || !canvas.height) return 0;
-        const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
-        let differ = 0;
-        for (let i = 0; i < data.length; i += 4) {
-          if (data[i + 3] > 0 && (data[i] !== data[0] || data[i + 1] !== data[1] || data[i + 2] !== data[2] || data[i + 3] !== data[3])) differ++;
-        }
-        return differ;
-      });
-      return { kind: plot.dataset.widget, pixels: Math.max(0, ...counts) };
-    }),
-  );
-  assert.equal(drawn.length, 3, JSON.stringify(drawn));
-  for (const { kind, pixels } of drawn) assert.ok(pixels > 500, `${kind} drew ${pixels} pixels`);
+  await assertDrawn(page, '[data-widget="time-plot"], [data-widget="phase-portrait"], [data-widget="spectrum"]', 3);
   const peak = await page.$eval('[data-widget="spectrum"]', (v) => v.peaks[0].frequency);
   assert.ok(Math.abs(peak - expected) < 0.05, `peak ${peak}`);
   // The frequency–amplitude plot: a formula curve and measured points up to the escape at b = 2.648.
@@ -162,9 +120,9 @@ test('editing b re-runs the checks, which still agree (b = 0.5)', async () => {
     [omega, exact],
     { timeout: 15_000 },
   );
-  await allReady();
+  await widgetsReady(page);
   await assertChecks(0.5);
   assert.equal(await cell(page, 'initial').locator('[data-cell-output]').textContent(), 'initial = [0.5, 0]');
-  assert.equal(await page.locator('[data-cell-error]:visible').count(), 0);
+  await assertNoCellErrors(page);
   assert.deepEqual(problems, []);
 });

@@ -4,8 +4,9 @@
  * itself; the stability chart, whose click sets γ and u in its simulator.
  */
 import assert from 'node:assert/strict';
-import { after, before, test } from 'node:test';
-import { cell, openChapter, openSite, typeIntoCell } from './fixture.mjs';
+import { test } from 'node:test';
+import { assertAgrees, assertDrawn, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
+import { cell, typeIntoCell } from './fixture.mjs';
 
 const WIDGETS = '[data-widget]';
 
@@ -41,47 +42,19 @@ function floquetGrowth({ u, gamma, omega }, steps = 4000) {
   return half > 1 ? Math.log(half + Math.sqrt(half * half - 1)) / T : 0;
 }
 
-/** @type {Awaited<ReturnType<typeof openSite>>} */
-let site;
 /** @type {import('playwright-core').Page} */
 let page;
 /** @type {string[]} */
 let problems;
 
-const allReady = () =>
-  page.waitForFunction(
-    (selector) => [...document.querySelectorAll(selector)].every((w) => w.hasAttribute('data-ready')),
-    WIDGETS,
-    { timeout: 30_000 },
-  );
-
-before(async () => {
-  site = await openSite();
-  ({ page, problems } = await openChapter(site, '/parametric-resonance/'));
-  await allReady();
-});
-after(async () => {
-  await page?.close();
-  await site?.close();
-});
-
-const checks = () =>
-  page.$$eval('[data-widget="theory-check"]', (all) =>
-    all.map((w) => ({ ...w.dataset, measured: +w.dataset.measured, predicted: +w.dataset.predicted, tolerance: +w.dataset.tolerance })),
-  );
-
-function assertAgrees(check) {
-  assert.equal(check.agrees, 'true', JSON.stringify(check));
-  assert.equal(check.relative, 'false');
-  assert.ok(Math.abs(check.measured - check.predicted) <= check.tolerance, JSON.stringify(check));
-}
+useChapter('/parametric-resonance/', (opened) => ({ page, problems } = opened));
 
 function assertChecks([formula, exact], params) {
   const s = firstOrder(params);
-  assertAgrees(formula);
+  assertAgrees(formula, { relative: false });
   assert.ok(Math.abs(formula.predicted - s) < 1e-12, `first-order s: page ${formula.predicted}, test ${s}`);
   assert.ok(Math.abs(formula.tolerance - (0.12 * s + 0.01)) < 1e-12);
-  assertAgrees(exact);
+  assertAgrees(exact, { relative: false });
   const floquet = floquetGrowth(params);
   assert.ok(Math.abs(exact.predicted - floquet) < 1e-6 * floquet, `Floquet s: page ${exact.predicted}, test ${floquet}`);
   assert.equal(exact.tolerance, 0.002);
@@ -93,26 +66,11 @@ test('the page loads with its widgets ready and drawn, and both growth-rate chec
     assert.ok(kinds.includes(kind), `no ${kind} widget; found ${kinds.join(', ')}`);
   }
   const params = { u: 0.3, gamma: 21.3, omega: 10 };
-  assertChecks(await checks(), params);
+  assertChecks(await theoryChecks(page), params);
   // the paper's example: inside the band, s ≈ 0.374 to first order, 0.346 exactly
   assert.ok(Math.abs(firstOrder(params) - 0.3741657) < 1e-6);
 
-  const drawn = await page.$$eval('[data-widget="time-plot"], [data-widget="phase-portrait"], [data-widget="stability-chart"]', (plots) =>
-    plots.map((plot) => {
-      const counts = [...plot.querySelectorAll('canvas')].map((canvas) => {
-        if (!canvas.width || !canvas.height) return 0;
-        const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
-        let differ = 0;
-        for (let i = 0; i < data.length; i += 4) {
-          if (data[i + 3] > 0 && (data[i] !== data[0] || data[i + 1] !== data[1] || data[i + 2] !== data[2] || data[i + 3] !== data[3])) differ++;
-        }
-        return differ;
-      });
-      return { kind: plot.dataset.widget, pixels: Math.max(0, ...counts) };
-    }),
-  );
-  assert.equal(drawn.length, 4, JSON.stringify(drawn));
-  for (const { kind, pixels } of drawn) assert.ok(pixels > 500, `${kind} drew ${pixels} pixels`);
+  await assertDrawn(page, '[data-widget="time-plot"], [data-widget="phase-portrait"], [data-widget="stability-chart"]', 4);
   // The chart found the tongue: between the first-order boundaries, whose width uω grows from 0 to 10
   // across the chart's 10 units of γ, lies half of the chart.
   const unstable = Number(await page.locator('[data-widget="stability-chart"]').getAttribute('data-unstable'));
@@ -159,7 +117,7 @@ test('editing u re-runs both checks, which still agree', async () => {
     firstOrder(params),
     { timeout: 20_000 },
   );
-  assertChecks(await checks(), params);
-  await allReady();
+  assertChecks(await theoryChecks(page), params);
+  await widgetsReady(page);
   assert.deepEqual(problems, []);
 });

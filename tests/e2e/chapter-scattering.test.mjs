@@ -6,11 +6,10 @@
  * re-runs both checks, which still agree.
  */
 import assert from 'node:assert/strict';
-import { after, before, test } from 'node:test';
-import { cell, openChapter, openSite, typeIntoCell } from './fixture.mjs';
+import { test } from 'node:test';
+import { assertAgrees, drawnPixels, resetCell, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
+import { typeIntoCell } from './fixture.mjs';
 
-/** @type {Awaited<ReturnType<typeof openSite>>} */
-let site;
 /** @type {import('playwright-core').Page} */
 let page;
 /** @type {string[]} */
@@ -18,38 +17,9 @@ let problems;
 
 const EXPECTED = { simulator: 1, trajectory: 1, equations: 1, 'theory-check': 2 };
 
-async function widgetsReady() {
-  await page.waitForFunction(
-    (expected) => {
-      const all = [...document.querySelectorAll('[data-widget]')];
-      const count = (kind) => all.filter((w) => w.dataset.widget === kind).length;
-      return Object.entries(expected).every(([kind, n]) => count(kind) >= n) && all.every((w) => w.hasAttribute('data-ready'));
-    },
-    EXPECTED,
-    { timeout: 30_000 },
-  );
-}
+useChapter('/scattering/', (opened) => ({ page, problems } = opened), { widgets: EXPECTED });
 
-before(async () => {
-  site = await openSite();
-  ({ page, problems } = await openChapter(site, '/scattering/'));
-  await widgetsReady();
-});
-after(async () => {
-  await page?.close();
-  await site?.close();
-});
-
-const checks = () =>
-  page.$$eval('[data-widget="theory-check"]', (all) =>
-    all.map((w) => ({ ...w.dataset, measured: Number(w.dataset.measured), predicted: Number(w.dataset.predicted), tolerance: Number(w.dataset.tolerance) })),
-  );
-
-function assertAgrees(check) {
-  assert.equal(check.agrees, 'true', JSON.stringify(check));
-  assert.equal(check.relative, 'false');
-  assert.ok(Math.abs(check.measured - check.predicted) <= check.tolerance, JSON.stringify(check));
-}
+const checks = () => theoryChecks(page);
 
 /**
  * The exact deflection of a particle of mass m started at (x, y) with momentum (px, py) in
@@ -79,14 +49,14 @@ function shortfall(x0, b, p, alpha, m) {
 
 function assertChecks([orbit, formula], alpha) {
   const [x0, b, p, m] = [-20, 1.5, 4, 0.5];
-  assertAgrees(orbit);
+  assertAgrees(orbit, { relative: false });
   const exact = exactDeflection(x0, b, p, 0, alpha, m);
   assert.ok(Math.abs(orbit.predicted - exact) < 1e-12, `exact orbit: page ${orbit.predicted}, test ${exact}`);
   // The run ends ~300 units out; what is left of the turn there is of order 1e-5 rad.
   assert.ok(orbit.tolerance > 0 && orbit.tolerance < 1e-4, JSON.stringify(orbit));
   assert.ok(orbit.measured < orbit.predicted, 'the simulated particle has not quite finished turning');
 
-  assertAgrees(formula);
+  assertAgrees(formula, { relative: false });
   const theta = rutherford(b, p, alpha, m);
   assert.ok(Math.abs(formula.predicted - theta) < 1e-12, `Rutherford: page ${formula.predicted}, test ${theta}`);
   const expected = 1.5 * Math.abs(shortfall(x0, b, p, alpha, m));
@@ -102,20 +72,7 @@ test('both deflection checks agree with formulas computed here; the beam and the
   assert.ok(Math.abs(formula.predicted - 1.117199) < 1e-6);
   assert.ok(Math.abs(formula.predicted - orbit.measured - 0.0414) < 0.001);
 
-  const pixels = await page.$eval('[data-widget="trajectory"]', (view) =>
-    Math.max(
-      0,
-      ...[...view.querySelectorAll('canvas')].map((canvas) => {
-        if (!canvas.width || !canvas.height) return 0;
-        const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
-        let differ = 0;
-        for (let i = 0; i < data.length; i += 4) {
-          if (data[i + 3] > 0 && (data[i] !== data[0] || data[i + 1] !== data[1] || data[i + 2] !== data[2] || data[i + 3] !== data[3])) differ++;
-        }
-        return differ;
-      }),
-    ),
-  );
+  const [{ pixels }] = await drawnPixels(page, '[data-widget="trajectory"]');
   assert.ok(pixels > 2000, `the trajectory view drew ${pixels} pixels`);
 
   // The envelope figure: 30 trajectories, the parabola, 30 points where y = 2b, the centre.
@@ -144,7 +101,7 @@ test('editing the field strength re-runs both checks, which still agree', async 
   const after = await checks();
   assertChecks(after, 20);
   assert.ok(after[0].measured < before.measured, 'a weaker field bends less');
-  await widgetsReady();
+  await widgetsReady(page, EXPECTED);
   assert.deepEqual(problems, []);
-  await cell(page, 'params').locator('[data-cell-reset]').click();
+  await resetCell(page, 'params');
 });

@@ -5,8 +5,9 @@
  * of the force.
  */
 import assert from 'node:assert/strict';
-import { after, before, test } from 'node:test';
-import { openChapter, openSite, typeIntoCell } from './fixture.mjs';
+import { test } from 'node:test';
+import { assertAgrees, assertDrawn, assertLoadsClean, assertNoCellErrors, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
+import { typeIntoCell } from './fixture.mjs';
 
 const [Q0, P0] = [-10, -10];
 
@@ -18,39 +19,15 @@ function exact({ m, F }, t) {
   return { q: Q0 + (E - E0) / F, v: p / E };
 }
 
-/** @type {Awaited<ReturnType<typeof openSite>>} */
-let site;
 /** @type {import('playwright-core').Page} */
 let page;
 /** @type {string[]} */
 let problems;
 
-const allReady = () =>
-  page.waitForFunction(() => [...document.querySelectorAll('[data-widget]')].every((w) => w.hasAttribute('data-ready')), null, {
-    timeout: 30_000,
-  });
-
-const checks = () =>
-  page.$$eval('[data-widget="theory-check"]', (all) =>
-    all.map((w) => ({
-      ...w.dataset,
-      measured: +w.dataset.measured,
-      predicted: +w.dataset.predicted,
-      tolerance: +w.dataset.tolerance,
-      method: w.querySelector('.pb-measured')?.textContent ?? '',
-    })),
-  );
-
-function assertAgrees(check) {
-  assert.equal(check.agrees, 'true', JSON.stringify(check));
-  assert.equal(check.relative, 'false');
-  assert.ok(Math.abs(check.measured - check.predicted) <= check.tolerance, JSON.stringify(check));
-}
-
 async function assertChecks(params) {
-  const [position, speed] = await checks();
-  assertAgrees(position);
-  assertAgrees(speed);
+  const [position, speed] = await theoryChecks(page, { method: true });
+  assertAgrees(position, { relative: false });
+  assertAgrees(speed, { relative: false });
   assert.equal(position.tolerance, 1e-9);
   assert.equal(speed.tolerance, 1e-9);
   // The position check compares at the time of the largest difference, which it names (to 1e-3, the step).
@@ -63,21 +40,13 @@ async function assertChecks(params) {
   assert.ok(speed.measured < 1 && fastest < 1);
 }
 
-before(async () => {
-  site = await openSite();
-  ({ page, problems } = await openChapter(site, '/special-relativity/'));
-  await allReady();
-});
-after(async () => {
-  await page?.close();
-  await site?.close();
-});
+useChapter('/special-relativity/', (opened) => ({ page, problems } = opened));
 
 test('the page loads clean: every cell runs, every widget gets ready, nothing leaves localhost', async () => {
-  assert.equal(await page.locator('[data-cell-error]:visible').count(), 0);
-  assert.equal(await page.locator('[data-widget="theory-check"]').count(), 2);
-  assert.equal(await page.locator('[data-widget="equations"] .katex').count(), 1);
-  assert.deepEqual(problems, []);
+  await assertLoadsClean(page, problems, {
+    '[data-widget="theory-check"]': 2,
+    '[data-widget="equations"] .katex': 1,
+  });
 });
 
 test('the simulation follows the closed form to 1e-9, and its speed stays below c', async () => {
@@ -89,22 +58,7 @@ test('the simulation follows the closed form to 1e-9, and its speed stays below 
 });
 
 test('the views and the comparison plots have drawn; the Newtonian speed crosses c at t = 16.45', async () => {
-  const drawn = await page.$$eval('[data-widget="time-plot"], [data-widget="phase-portrait"]', (plots) =>
-    plots.map((plot) => {
-      const counts = [...plot.querySelectorAll('canvas')].map((canvas) => {
-        if (!canvas.width || !canvas.height) return 0;
-        const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
-        let differ = 0;
-        for (let i = 0; i < data.length; i += 4) {
-          if (data[i + 3] > 0 && (data[i] !== data[0] || data[i + 1] !== data[1] || data[i + 2] !== data[2] || data[i + 3] !== data[3])) differ++;
-        }
-        return differ;
-      });
-      return { kind: plot.dataset.widget, pixels: Math.max(0, ...counts) };
-    }),
-  );
-  assert.equal(drawn.length, 2, JSON.stringify(drawn));
-  for (const { kind, pixels } of drawn) assert.ok(pixels > 500, `${kind} drew ${pixels} pixels`);
+  await assertDrawn(page, '[data-widget="time-plot"], [data-widget="phase-portrait"]', 2);
 
   const velocity = page.locator('svg[aria-label^="Velocity against time"]');
   assert.equal(await velocity.locator('path').count(), 2);
@@ -127,8 +81,8 @@ test('editing the force re-runs the checks, which still agree (F = 2)', async ()
     fastest,
     { timeout: 20_000 },
   );
-  await allReady();
+  await widgetsReady(page);
   await assertChecks(params);
-  assert.equal(await page.locator('[data-cell-error]:visible').count(), 0);
+  await assertNoCellErrors(page);
   assert.deepEqual(problems, []);
 });
