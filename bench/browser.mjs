@@ -28,6 +28,7 @@ import { fileURLToPath } from 'node:url';
 import { gzipSync } from 'node:zlib';
 import { launchBrowser } from '../tests/e2e/browser.mjs';
 import { DIST, startServer } from '../tests/e2e/server.mjs';
+import { cell, typeIntoCell } from '../tests/e2e/fixture.mjs';
 
 const ROOT = fileURLToPath(new URL('../', import.meta.url));
 const SECONDS = Number(process.env.BENCH_SECONDS ?? 4);
@@ -64,7 +65,6 @@ function ensureBuilt() {
 }
 
 // ── driving cells ─────────────────────────────────────────────────────────────
-const cell = (page, id) => page.locator(`[data-cell="${id}"]`);
 
 /** The text of a cell as the page holds it (editor or static code). */
 async function sourceOf(page, id) {
@@ -75,23 +75,15 @@ async function sourceOf(page, id) {
   });
 }
 
-/** Replaces a cell's text like a reader (click, select all, type) and runs it. */
-async function typeIntoCell(page, id, source) {
-  if ((await sourceOf(page, id)) === source) return;
-  const root = cell(page, id);
-  await root.locator('.cell-editor').click();
-  const content = root.locator('.cm-content');
-  await content.waitFor({ timeout: 10_000 });
-  await content.click();
-  await page.keyboard.press('ControlOrMeta+A');
-  await page.keyboard.insertText(source);
-  await page.keyboard.press('Shift+Enter');
+/** Replaces a cell's text like a reader and runs it, unless it already holds that text. */
+async function setCell(page, id, source) {
+  if ((await sourceOf(page, id)) !== source) await typeIntoCell(page, id, source);
 }
 
 /** Sets the playground's cells, then waits for the simulator they describe to be drawn. */
 async function setPlayground(page, model, options, expect) {
-  for (const [id, source] of Object.entries(model)) await typeIntoCell(page, id, source);
-  await typeIntoCell(page, 'options', `options = (${options})`);
+  for (const [id, source] of Object.entries(model)) await setCell(page, id, source);
+  await setCell(page, 'options', `options = (${options})`);
   await page.waitForFunction(
     ({ h, count, speed }) => {
       const el = document.querySelector('[data-cell="sim"] [data-widget="simulator"]');
