@@ -39,8 +39,12 @@ export function spectrumCommand(argv: readonly string[]): string {
   if (c < 0) throw new InputError(`no column "${name}" in ${input}; it has ${table.columns.join(', ')}`);
   const t = table.columns.indexOf('t');
   if (t < 0) throw new InputError(`${input} has no t column`);
-  const from = number(args.values.get('from') ?? '-Infinity'.replace('-Infinity', String(-Number.MAX_VALUE)), '--from');
-  const to = number(args.values.get('to') ?? String(Number.MAX_VALUE), '--to');
+  const bound = (name: string, fallback: number) => {
+    const text = args.values.get(name);
+    return text === undefined ? fallback : number(text, `--${name}`);
+  };
+  const from = bound('from', -Infinity);
+  const to = bound('to', Infinity);
   if (to < from) throw new InputError(`--to (${to}) is before --from (${from})`);
 
   const series: number[] = [];
