@@ -14,8 +14,13 @@
  * c. the paper's scattered beam (section 7.3) with 1000 particles: frame rate
  *    (trajectory view; with the time plot; with the full trail);
  * d. per-page JavaScript (gzip) on first load, after the editor loads, and
- *    after the cell parser loads.
+ *    after the cell parser loads;
+ * e. cold-cache loads of every page (cold-load.mjs): JavaScript before any
+ *    interaction, navigation to the first widget drawn, plain and under
+ *    DevTools' Slow 4G with a 4× CPU slowdown, and cumulative layout shift.
  *
+ * BENCH_ONLY=cold runs part e alone; BENCH_LOADS sets the loads per page and
+ * profile (default 3; the median is reported).
  * Builds the site first when dist/ (or PHASEBOOK_OUT_DIR) has none.
  * BENCH_SECONDS sets the measuring window per scenario (default 4 s, after a
  * 2 s warm-up).
@@ -29,9 +34,12 @@ import { gzipSync } from 'node:zlib';
 import { launchBrowser } from '../tests/e2e/browser.mjs';
 import { DIST, startServer } from '../tests/e2e/server.mjs';
 import { cell, typeIntoCell } from '../tests/e2e/fixture.mjs';
+import { coldLoad, median, CPU_SLOWDOWN } from './cold-load.mjs';
 
 const ROOT = fileURLToPath(new URL('../', import.meta.url));
 const SECONDS = Number(process.env.BENCH_SECONDS ?? 4);
+const LOADS = Number(process.env.BENCH_LOADS ?? 3);
+const ONLY_COLD = process.env.BENCH_ONLY === 'cold';
 const WARM_UP_MS = 2000;
 const FRAME_MS = 1000 / 60;
 
@@ -293,6 +301,173 @@ async function pageBytes(context, origin, path) {
 }
 
 // ── main ──────────────────────────────────────────────────────────────────────
+/** Parts 0 and a–d: the simulator driven through /playground/, and bytes per page. */
+async function interactive(browser, server, print) {
+  const blank = await browser.context.newPage();
+  await blank.setContent('<!doctype html><title>blank</title>');
+  log('measuring the frame-rate ceiling of an empty page…');
+  const ceiling = frameStats(await blank.evaluate(rafCeilingInPage, 3000));
+  await blank.close();
+
+  const page = await browser.context.newPage();
+  await page.addInitScript(() => localStorage.clear());
+  const session = await browser.context.newCDPSession(page);
+  await session.send('Performance.enable');
+  await page.goto(`${server.origin}/playground/`);
+  await page.waitForSelector('body[data-cells-ready]', { state: 'attached', timeout: 30_000 });
+  await page.waitForSelector('[data-cell="sim"] [data-widget="simulator"][data-ready]', { timeout: 30_000 });
+
+  log('a. the default model at speed 1…');
+  const a = await scenario(page, session, {
+    model: DEFAULT_MODEL,
+    options: "{dt: 5e-4, speed: 1, views: ['time', 'phase', 'spectrum']}",
+    expect: { h: DEFAULT_H, count: 1, speed: 1 },
+  });
+  log('b. the default model at speed 50…');
+  const b = await scenario(page, session, {
+    model: DEFAULT_MODEL,
+    options: "{dt: 5e-4, speed: 50, views: ['time', 'phase', 'spectrum']}",
+    expect: { h: DEFAULT_H, count: 1, speed: 50 },
+  });
+  log('c. the 1000-particle beam, trajectory view…');
+  const c1 = await scenario(page, session, {
+    model: BEAM_MODEL,
+    options: "{speed: 1, views: ['trajectory']}",
+    expect: { h: BEAM_H, count: 1000, speed: 1 },
+  });
+  log('c. the 1000-particle beam, trajectory and time views…');
+  const c2 = await scenario(page, session, {
+    model: BEAM_MODEL,
+    options: "{speed: 1, views: ['trajectory', 'time']}",
+    expect: { h: BEAM_H, count: 1000, speed: 1 },
+  });
+  log('c. the 1000-particle beam, trajectory view with the full trail…');
+  const c3 = await scenario(page, session, {
+    model: BEAM_MODEL,
+    options: "{speed: 1, views: ['trajectory'], trajectory: {trail: 'full'}}",
+    expect: { h: BEAM_H, count: 1000, speed: 1 },
+  });
+  await page.close();
+
+  log('d. JavaScript per page…');
+  // Bytes do not depend on timing, so three pages at a time.
+  const paths = sitePages();
+  const pages = new Array(paths.length);
+  let next = 0;
+  const worker = async () => {
+    while (next < paths.length) {
+      const i = next++;
+      log(`  ${paths[i]}`);
+      pages[i] = await pageBytes(browser.context, server.origin, paths[i]);
+    }
+  };
+  await Promise.all([worker(), worker(), worker()]);
+
+  // ── report ──
+  print(`Each scenario: ${WARM_UP_MS / 1000} s warm-up, then ${SECONDS} s measured. Frame budget 16.7 ms (60 Hz).`);
+  print();
+  print(`Empty-page frame-rate ceiling (rAF on a blank page, 3 s): **${f1(ceiling.fps)} fps** ` +
+    `(p95 frame interval ${f1(ceiling.p95)} ms, ${ceiling.missed} missed frame(s) of ${ceiling.frames}).`);
+  print();
+  const rel = (fps) => pct(fps / ceiling.fps);
+  print('| Scenario | Measure | Result | Target |');
+  print('|---|---|---|---|');
+  const row = (s, m, r, t = '') => print(`| ${s} | ${m} | ${r} | ${t} |`);
+  const A = 'a. eq. 7, speed 1 (time, phase, spectrum)';
+  row(A, 'integrate + draw per frame (driver stats), mean / p95',
+    `${f2(a.work)} ms / ${f2(a.workP95)} ms = **${pct(a.work / FRAME_MS)}** / ${pct(a.workP95 / FRAME_MS)} of 16.7 ms`, '< 10 %');
+  row(A, 'of which integrate / draw', `${f2(a.integrate)} ms / ${f2(a.draw)} ms`);
+  row(A, 'main thread busy (CDP TaskDuration) / of it script', `${pct(a.busy)} / ${pct(a.script)}`);
+  row(A, 'long tasks (> 50 ms)', a.longTaskSupported ? `${a.longTasks.length} (${f1(a.longTotal)} ms)` : 'not reported', '0');
+  row(A, 'frame rate (rAF)', `${f1(a.frames.fps)} fps = ${rel(a.frames.fps)} of ceiling; p95 interval ${f1(a.frames.p95)} ms, ${a.frames.missed} missed`);
+  row(A, 'steps/s achieved', `${int(a.stepsPerSecond)} (requested ${int(a.targetRate)})`, '≈ 2000');
+  const B = 'b. eq. 7, speed 50 (time, phase, spectrum)';
+  row(B, 'frame rate (rAF)', `**${f1(b.frames.fps)} fps** = ${rel(b.frames.fps)} of ceiling; p95 interval ${f1(b.frames.p95)} ms, ${b.frames.missed} missed`, '60 fps');
+  row(B, 'steps/s achieved', `**${int(b.stepsPerSecond)}** (requested ${int(b.targetRate)}; pace ${pct(b.pace)})`, '≥ 100 000');
+  row(B, 'integrate + draw per frame, mean / p95', `${f2(b.work)} ms / ${f2(b.workP95)} ms (integrate ${f2(b.integrate)}, draw ${f2(b.draw)})`);
+  row(B, 'main thread busy / long tasks', `${pct(b.busy)} / ${b.longTaskSupported ? `${b.longTasks.length} (${f1(b.longTotal)} ms)` : '–'}`);
+  const beams = [
+    ['c. beam of 1000, trajectory view', c1],
+    ['c. beam of 1000, trajectory + time views', c2],
+    ["c. beam of 1000, trajectory view, trail: 'full'", c3],
+  ];
+  for (const [label, c] of beams) {
+    row(label, 'frame rate (rAF)', `**${f1(c.frames.fps)} fps** = ${rel(c.frames.fps)} of ceiling; p95 interval ${f1(c.frames.p95)} ms, ${c.frames.missed} missed`, '≥ 30 fps');
+    row(label, 'steps/s achieved (per particle)', `${int(c.stepsPerSecond)} (requested ${int(c.targetRate)}; pace ${pct(c.pace)}) = ${int(c.stepsPerSecond * 1000)} particle-steps/s`);
+    row(label, 'integrate + draw per frame, mean / p95', `${f2(c.work)} ms / ${f2(c.workP95)} ms (integrate ${f2(c.integrate)}, draw ${f2(c.draw)})`);
+    row(label, 'main thread busy / long tasks', `${pct(c.busy)} / ${c.longTaskSupported ? `${c.longTasks.length} (${f1(c.longTotal)} ms)` : '–'}`);
+    if (c.error) row(label, 'stopped', c.error);
+  }
+  for (const [label, s] of [['a', a], ['b', b], ...beams]) {
+    if (s.error || !s.playing) log(`warning: scenario ${label} was not playing at the end${s.error ? `: ${s.error}` : ''}`);
+  }
+  print();
+  print('d. JavaScript per page, gzip (zlib level 9) of each JS response, cumulative:');
+  print();
+  print('| Page | Cells | First load | + editor (focus a cell) | + parser (run an edited cell) |');
+  print('|---|---|---|---|---|');
+  const files = (n) => `${n} file${n === 1 ? '' : 's'}`;
+  for (const p of pages) {
+    const cellText = (s) => (s ? `${kb(s.bytes)} (${files(s.files)})` : '—');
+    print(`| \`${p.path}\` | ${p.cells} | ${kb(p.first.bytes)} (${files(p.first.files)}) | ${cellText(p.editor)} | ${cellText(p.parser)} |`);
+  }
+  const big = new Map();
+  for (const p of pages) {
+    for (const script of p.scripts) {
+      if (script.bytes < 20 * 1024) continue;
+      const entry = big.get(script.name) ?? { bytes: script.bytes, stage: script.stage, pages: 0 };
+      entry.pages++;
+      big.set(script.name, entry);
+    }
+  }
+  print();
+  print('Scripts over 20 KB gzip: ' +
+    [...big].sort((x, y) => y[1].bytes - x[1].bytes)
+      .map(([name, e]) => `\`${name}\` ${kb(e.bytes)} (${e.stage === 'first' ? 'first load' : e.stage}, ${e.pages} page${e.pages === 1 ? '' : 's'})`)
+      .join('; ') + '.');
+  print();
+}
+
+/** Part e: cold-cache loads of every page, plain and throttled, against the targets of issue 7. */
+async function coldLoads(browser, server, print) {
+  const paths = sitePages();
+  const profiles = [
+    ['loopback', false],
+    [`Slow 4G + ${CPU_SLOWDOWN}× CPU`, true],
+  ];
+  const results = new Map();
+  for (const [name, throttled] of profiles) {
+    for (const path of paths) {
+      log(`e. ${path}, ${name}…`);
+      const runs = [];
+      for (let i = 0; i < LOADS; i++) runs.push(await coldLoad(browser.context, server.origin, path, { throttled }));
+      results.set(`${name} ${path}`, runs);
+    }
+  }
+  const ms = (x) => (Number.isFinite(x) ? `${Math.round(x)} ms` : '—');
+  print(`e. Cold-cache loads, median of ${LOADS} per page and profile. JS: gzip of every script fetched before any ` +
+    'interaction (first load, then 1.5 s idle). "First widget": navigation to the first widget drawn ' +
+    '(`data-ready`), and to the first simulator drawn. CLS: layout-shift entries without recent input.');
+  print();
+  print(`| Page | JS before interaction | heavy modules | first widget / first simulator (loopback) | the same, Slow 4G + ${CPU_SLOWDOWN}× CPU | CLS |`);
+  print('|---|---|---|---|---|---|');
+  for (const path of paths) {
+    const plain = results.get(`${profiles[0][0]} ${path}`);
+    const slow = results.get(`${profiles[1][0]} ${path}`);
+    const bytes = median(plain.map((r) => r.jsBytes));
+    const heavy = [...new Set(plain.flatMap((r) => r.heavy))];
+    const cls = Math.max(...plain.map((r) => r.cls), ...slow.map((r) => r.cls));
+    const times = (runs) => `${ms(median(runs.map((r) => r.widgetMs)))} / ${ms(median(runs.map((r) => r.simulatorMs)))}`;
+    print(`| \`${path}\` | ${kb(bytes)} (${plain[0].jsFiles} files) | ${heavy.length ? heavy.join(', ') : 'none'} | ${times(plain)} | ${times(slow)} | ${cls.toFixed(4)} |`);
+  }
+  print();
+  print('Targets: ≤ 40 KB of JavaScript and no heavy module (mathjs, KaTeX, parser, editor) before interaction; ' +
+    'first widget ≤ 500 ms on loopback and ≤ 2.5 s throttled; CLS < 0.02.');
+  const worst = [...results.values()].flat().filter((r) => r.shifts.length).sort((a, b) => b.cls - a.cls)[0];
+  if (worst) print(`Largest shift: ${worst.path}, ${worst.shifts.map((s) => `${s.value.toFixed(4)} at ${s.at} ms (${s.sources.join(', ')})`).join('; ')}.`);
+  print();
+}
+
 async function main() {
   ensureBuilt();
   const started = Date.now();
@@ -303,137 +478,18 @@ async function main() {
   const print = (line = '') => out.push(line);
   try {
     const blank = await browser.context.newPage();
-    const session0 = await browser.context.newCDPSession(blank);
-    const version = await session0.send('Browser.getVersion');
-    await blank.setContent('<!doctype html><title>blank</title>');
-    log('measuring the frame-rate ceiling of an empty page…');
-    const ceiling = frameStats(await blank.evaluate(rafCeilingInPage, 3000));
+    const version = await (await browser.context.newCDPSession(blank)).send('Browser.getVersion');
     await blank.close();
-
-    const page = await browser.context.newPage();
-    await page.addInitScript(() => localStorage.clear());
-    const session = await browser.context.newCDPSession(page);
-    await session.send('Performance.enable');
-    await page.goto(`${server.origin}/playground/`);
-    await page.waitForSelector('body[data-cells-ready]', { state: 'attached', timeout: 30_000 });
-    await page.waitForSelector('[data-cell="sim"] [data-widget="simulator"][data-ready]', { timeout: 30_000 });
-
-    log('a. the default model at speed 1…');
-    const a = await scenario(page, session, {
-      model: DEFAULT_MODEL,
-      options: "{dt: 5e-4, speed: 1, views: ['time', 'phase', 'spectrum']}",
-      expect: { h: DEFAULT_H, count: 1, speed: 1 },
-    });
-    log('b. the default model at speed 50…');
-    const b = await scenario(page, session, {
-      model: DEFAULT_MODEL,
-      options: "{dt: 5e-4, speed: 50, views: ['time', 'phase', 'spectrum']}",
-      expect: { h: DEFAULT_H, count: 1, speed: 50 },
-    });
-    log('c. the 1000-particle beam, trajectory view…');
-    const c1 = await scenario(page, session, {
-      model: BEAM_MODEL,
-      options: "{speed: 1, views: ['trajectory']}",
-      expect: { h: BEAM_H, count: 1000, speed: 1 },
-    });
-    log('c. the 1000-particle beam, trajectory and time views…');
-    const c2 = await scenario(page, session, {
-      model: BEAM_MODEL,
-      options: "{speed: 1, views: ['trajectory', 'time']}",
-      expect: { h: BEAM_H, count: 1000, speed: 1 },
-    });
-    log('c. the 1000-particle beam, trajectory view with the full trail…');
-    const c3 = await scenario(page, session, {
-      model: BEAM_MODEL,
-      options: "{speed: 1, views: ['trajectory'], trajectory: {trail: 'full'}}",
-      expect: { h: BEAM_H, count: 1000, speed: 1 },
-    });
-    await page.close();
-
-    log('d. JavaScript per page…');
-    // Bytes do not depend on timing, so three pages at a time.
-    const paths = sitePages();
-    const pages = new Array(paths.length);
-    let next = 0;
-    const worker = async () => {
-      while (next < paths.length) {
-        const i = next++;
-        log(`  ${paths[i]}`);
-        pages[i] = await pageBytes(browser.context, server.origin, paths[i]);
-      }
-    };
-    await Promise.all([worker(), worker(), worker()]);
-
-    // ── report ──
     const cpu = cpus();
     print('# Phasebook in the browser');
     print();
     print(`Machine: ${cpu[0]?.model ?? 'unknown CPU'}, ${cpu.length} cores, ${(totalmem() / 2 ** 30).toFixed(1)} GiB; ` +
       `Node ${process.version}; ${version.product} (headless, --disable-gpu).`);
-    print(`Load average (1 min) ${loadBefore.toFixed(2)} before the run, ${loadavg()[0].toFixed(2)} after: ` +
-      `other work on the machine shows up as missed frames and long tasks.`);
-    print(`Each scenario: ${WARM_UP_MS / 1000} s warm-up, then ${SECONDS} s measured. Frame budget 16.7 ms (60 Hz).`);
+    print(`Load average (1 min) ${loadBefore.toFixed(2)} before the run: ` +
+      `other work on the machine shows up as missed frames, long tasks and slower loads.`);
     print();
-    print(`Empty-page frame-rate ceiling (rAF on a blank page, 3 s): **${f1(ceiling.fps)} fps** ` +
-      `(p95 frame interval ${f1(ceiling.p95)} ms, ${ceiling.missed} missed frame(s) of ${ceiling.frames}).`);
-    print();
-    const rel = (fps) => pct(fps / ceiling.fps);
-    print('| Scenario | Measure | Result | Target |');
-    print('|---|---|---|---|');
-    const row = (s, m, r, t = '') => print(`| ${s} | ${m} | ${r} | ${t} |`);
-    const A = 'a. eq. 7, speed 1 (time, phase, spectrum)';
-    row(A, 'integrate + draw per frame (driver stats), mean / p95',
-      `${f2(a.work)} ms / ${f2(a.workP95)} ms = **${pct(a.work / FRAME_MS)}** / ${pct(a.workP95 / FRAME_MS)} of 16.7 ms`, '< 10 %');
-    row(A, 'of which integrate / draw', `${f2(a.integrate)} ms / ${f2(a.draw)} ms`);
-    row(A, 'main thread busy (CDP TaskDuration) / of it script', `${pct(a.busy)} / ${pct(a.script)}`);
-    row(A, 'long tasks (> 50 ms)', a.longTaskSupported ? `${a.longTasks.length} (${f1(a.longTotal)} ms)` : 'not reported', '0');
-    row(A, 'frame rate (rAF)', `${f1(a.frames.fps)} fps = ${rel(a.frames.fps)} of ceiling; p95 interval ${f1(a.frames.p95)} ms, ${a.frames.missed} missed`);
-    row(A, 'steps/s achieved', `${int(a.stepsPerSecond)} (requested ${int(a.targetRate)})`, '≈ 2000');
-    const B = 'b. eq. 7, speed 50 (time, phase, spectrum)';
-    row(B, 'frame rate (rAF)', `**${f1(b.frames.fps)} fps** = ${rel(b.frames.fps)} of ceiling; p95 interval ${f1(b.frames.p95)} ms, ${b.frames.missed} missed`, '60 fps');
-    row(B, 'steps/s achieved', `**${int(b.stepsPerSecond)}** (requested ${int(b.targetRate)}; pace ${pct(b.pace)})`, '≥ 100 000');
-    row(B, 'integrate + draw per frame, mean / p95', `${f2(b.work)} ms / ${f2(b.workP95)} ms (integrate ${f2(b.integrate)}, draw ${f2(b.draw)})`);
-    row(B, 'main thread busy / long tasks', `${pct(b.busy)} / ${b.longTaskSupported ? `${b.longTasks.length} (${f1(b.longTotal)} ms)` : '–'}`);
-    const beams = [
-      ['c. beam of 1000, trajectory view', c1],
-      ['c. beam of 1000, trajectory + time views', c2],
-      ["c. beam of 1000, trajectory view, trail: 'full'", c3],
-    ];
-    for (const [label, c] of beams) {
-      row(label, 'frame rate (rAF)', `**${f1(c.frames.fps)} fps** = ${rel(c.frames.fps)} of ceiling; p95 interval ${f1(c.frames.p95)} ms, ${c.frames.missed} missed`, '≥ 30 fps');
-      row(label, 'steps/s achieved (per particle)', `${int(c.stepsPerSecond)} (requested ${int(c.targetRate)}; pace ${pct(c.pace)}) = ${int(c.stepsPerSecond * 1000)} particle-steps/s`);
-      row(label, 'integrate + draw per frame, mean / p95', `${f2(c.work)} ms / ${f2(c.workP95)} ms (integrate ${f2(c.integrate)}, draw ${f2(c.draw)})`);
-      row(label, 'main thread busy / long tasks', `${pct(c.busy)} / ${c.longTaskSupported ? `${c.longTasks.length} (${f1(c.longTotal)} ms)` : '–'}`);
-      if (c.error) row(label, 'stopped', c.error);
-    }
-    for (const [label, s] of [['a', a], ['b', b], ...beams]) {
-      if (s.error || !s.playing) log(`warning: scenario ${label} was not playing at the end${s.error ? `: ${s.error}` : ''}`);
-    }
-    print();
-    print('d. JavaScript per page, gzip (zlib level 9) of each JS response, cumulative:');
-    print();
-    print('| Page | Cells | First load | + editor (focus a cell) | + parser (run an edited cell) |');
-    print('|---|---|---|---|---|');
-    const files = (n) => `${n} file${n === 1 ? '' : 's'}`;
-    for (const p of pages) {
-      const cellText = (s) => (s ? `${kb(s.bytes)} (${files(s.files)})` : '—');
-      print(`| \`${p.path}\` | ${p.cells} | ${kb(p.first.bytes)} (${files(p.first.files)}) | ${cellText(p.editor)} | ${cellText(p.parser)} |`);
-    }
-    const big = new Map();
-    for (const p of pages) {
-      for (const script of p.scripts) {
-        if (script.bytes < 20 * 1024) continue;
-        const entry = big.get(script.name) ?? { bytes: script.bytes, stage: script.stage, pages: 0 };
-        entry.pages++;
-        big.set(script.name, entry);
-      }
-    }
-    print();
-    print('Scripts over 20 KB gzip: ' +
-      [...big].sort((x, y) => y[1].bytes - x[1].bytes)
-        .map(([name, e]) => `\`${name}\` ${kb(e.bytes)} (${e.stage === 'first' ? 'first load' : e.stage}, ${e.pages} page${e.pages === 1 ? '' : 's'})`)
-        .join('; ') + '.');
-    print();
+    if (!ONLY_COLD) await interactive(browser, server, print);
+    await coldLoads(browser, server, print);
     print(`Run took ${((Date.now() - started) / 1000).toFixed(0)} s.`);
   } finally {
     await browser.close();

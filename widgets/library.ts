@@ -3,53 +3,66 @@
  * name (e.g. `simulator(...)` in a cell). Add entries here: each value is
  * handed to cells as is — a function stays a function the cell calls.
  *
- * widgets/cells/builtins.ts spreads this object over the standard builtins,
- * so an entry here wins over a standard builtin of the same name. A cell that
- * defines the same name wins over both.
+ * widgets/cells/boot.ts passes this catalogue to the cell machinery, over the
+ * standard builtins, so an entry here wins over a standard builtin of the
+ * same name. A cell that defines the same name wins over both.
  *
  * Every entry is lazy: its module loads when a cell first names it, so a page
- * ships only the widgets its cells use, and none before its cells run.
+ * ships only the widgets its cells use, and none before its cells run. The
+ * page's context (book/page-data.ts) carries what the build compiled and
+ * typeset, so that the entries which build models or typeset math use it
+ * instead of loading mathjs or KaTeX.
  */
+import type { PageContext } from './book/page-data.ts';
 import { lazy } from './cells/lazy-builtin.ts';
 
-const core = () => import('./core/index.ts');
-const analysis = () => import('./book/analysis.ts');
+export function createLibrary(page: PageContext): Record<string, unknown> {
+  // The core's modules one by one, not its index: a page then loads only the parts its cells use.
+  const simulation = () => import('./core/simulation.ts');
+  const spectrum = () => import('./core/spectrum.ts');
+  const invariants = () => import('./core/invariants.ts');
+  const analysis = () => import('./book/analysis.ts');
+  const typesetting = () => import('./book/tex.ts').then((m) => m.typesetting(page.typeset));
+  const build = { store: page.models };
 
-export const library: Record<string, unknown> = {
-  // Widgets
-  /** simulator({hamiltonian, initial, …}) → Promise of the widget's element */
-  simulator: lazy(() => import('./simulator/simulator.ts').then((m) => m.simulator)),
-  /** Views (each has an `.element`), for composing a simulator by hand */
-  timePlot: lazy(() => import('./plots/time-plot.ts').then((m) => m.timePlot)),
-  trajectoryView: lazy(() => import('./plots/trajectory-view.ts').then((m) => m.trajectoryView)),
-  phasePortrait: lazy(() => import('./plots/phase-portrait.ts').then((m) => m.phasePortrait)),
-  spectrumView: lazy(() => import('./plots/spectrum-view.ts').then((m) => m.spectrumView)),
-  /** theoryCheck({label, measured, predicted, tolerance, relative, unit, method, formula}) → element */
-  theoryCheck: lazy(() => import('./book/theory-check.ts').then((m) => m.theoryCheck)),
-  /** equations(model) → H and Hamilton's equations, typeset */
-  equations: lazy(() => import('./book/tex.ts').then((m) => m.equations)),
-  /** tex(source, {display}) → typeset LaTeX */
-  tex: lazy(() => import('./book/tex.ts').then((m) => m.tex)),
-  /** stabilityChart({hamiltonian, params, x, y, frequencyParam, boundaries, onSelect}) → Floquet chart computed in a worker */
-  stabilityChart: lazy(() => import('./book/stability-chart.ts').then((m) => m.stabilityChart)),
+  return {
+    // Widgets
+    /** simulator({hamiltonian, initial, …}) → Promise of the widget's element */
+    simulator: lazy(() => import('./simulator/simulator.ts').then((m) => (options: Parameters<typeof m.simulator>[0]) => m.simulator(options, build))),
+    /** Views (each has an `.element`), for composing a simulator by hand */
+    timePlot: lazy(() => import('./plots/time-plot.ts').then((m) => m.timePlot)),
+    trajectoryView: lazy(() => import('./plots/trajectory-view.ts').then((m) => m.trajectoryView)),
+    phasePortrait: lazy(() => import('./plots/phase-portrait.ts').then((m) => m.phasePortrait)),
+    spectrumView: lazy(() => import('./plots/spectrum-view.ts').then((m) => m.spectrumView)),
+    /** theoryCheck({label, measured, predicted, tolerance, relative, unit, method, formula}) → element */
+    theoryCheck: lazy(() => import('./book/theory-check.ts').then((m) => m.theoryCheck)),
+    /** equations(model) → H and Hamilton's equations, typeset */
+    equations: lazy(() => typesetting().then((t) => t.equations)),
+    /** tex(source, {display}) → typeset LaTeX */
+    tex: lazy(() => typesetting().then((t) => t.tex)),
+    /** stabilityChart({hamiltonian, params, x, y, frequencyParam, boundaries, onSelect}) → Floquet chart computed in a worker */
+    stabilityChart: lazy(() => import('./book/stability-chart.ts').then((m) => (options: Parameters<typeof m.stabilityChart>[0]) => m.stabilityChart(options, build))),
 
-  // The simulation core
-  /** canonicalEquations({dof, hamiltonian, params}) → Promise of a Model */
-  canonicalEquations: lazy(() => core().then((m) => m.canonicalEquations)),
-  /** new Simulation(model, {initial, dt, every, derived}): integrate off-screen, e.g. for a theory check */
-  Simulation: lazy(() => core().then((m) => m.Simulation)),
-  spectrum: lazy(() => core().then((m) => m.spectrum)),
-  findPeaks: lazy(() => core().then((m) => m.findPeaks)),
-  relativeDrift: lazy(() => core().then((m) => m.relativeDrift)),
-  evaluateAlong: lazy(() => core().then((m) => m.evaluateAlong)),
+    // The simulation core
+    /** canonicalEquations({dof, hamiltonian, params}) → Promise of a Model */
+    canonicalEquations: lazy(() =>
+      import('./core/canonical-equations.ts').then((m) => (spec: Parameters<typeof m.canonicalEquations>[0]) => m.canonicalEquations(spec, build)),
+    ),
+    /** new Simulation(model, {initial, dt, every, derived}): integrate off-screen, e.g. for a theory check */
+    Simulation: lazy(() => simulation().then((m) => m.Simulation)),
+    spectrum: lazy(() => spectrum().then((m) => m.spectrum)),
+    findPeaks: lazy(() => spectrum().then((m) => m.findPeaks)),
+    relativeDrift: lazy(() => invariants().then((m) => m.relativeDrift)),
+    evaluateAlong: lazy(() => invariants().then((m) => m.evaluateAlong)),
 
-  // Analysis for the chapters' theory checks
-  crossings: lazy(() => analysis().then((m) => m.crossings)),
-  meanPeriod: lazy(() => analysis().then((m) => m.meanPeriod)),
-  floquet: lazy(() => analysis().then((m) => m.floquet)),
-  keplerOrbit: lazy(() => analysis().then((m) => m.keplerOrbit)),
-  rutherfordAngle: lazy(() => analysis().then((m) => m.rutherfordAngle)),
-  deflectionFrom: lazy(() => analysis().then((m) => m.deflectionFrom)),
-  outgoingDirection: lazy(() => analysis().then((m) => m.outgoingDirection)),
-  angleBetween: lazy(() => analysis().then((m) => m.angleBetween)),
-};
+    // Analysis for the chapters' theory checks
+    crossings: lazy(() => analysis().then((m) => m.crossings)),
+    meanPeriod: lazy(() => analysis().then((m) => m.meanPeriod)),
+    floquet: lazy(() => analysis().then((m) => m.floquet)),
+    keplerOrbit: lazy(() => analysis().then((m) => m.keplerOrbit)),
+    rutherfordAngle: lazy(() => analysis().then((m) => m.rutherfordAngle)),
+    deflectionFrom: lazy(() => analysis().then((m) => m.deflectionFrom)),
+    outgoingDirection: lazy(() => analysis().then((m) => m.outgoingDirection)),
+    angleBetween: lazy(() => analysis().then((m) => m.angleBetween)),
+  };
+}

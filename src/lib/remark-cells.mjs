@@ -9,7 +9,7 @@
  *
  * Emitted markup (the contract the client and the e2e tests rely on):
  *
- *   <figure class="cell" data-cell="<id>" data-cell-name="<name>"
+ *   <figure class="cell" id="cell-<id>" data-cell="<id>" data-cell-name="<name>"
  *           data-cell-hash="<sha256 of the source, 12 hex>" data-cell-spec="<CellSpec JSON>">
  *     <div class="cell-box">
  *       <div class="cell-editor"><pre class="cell-code"><code>…highlighted source…</code></pre></div>
@@ -27,8 +27,14 @@
  */
 import { createHash } from 'node:crypto';
 import { parseCell } from '@observablehq/parser';
+import { fromHtmlIsomorphic } from 'hast-util-from-html-isomorphic';
 import { describeCell, formatError } from '../../widgets/cells/spec.ts';
 import { highlightJs } from './highlight-js.mjs';
+import { precompileChapter } from './precompile.ts';
+import { PAGE_DATA_ATTRIBUTE } from '../../widgets/book/page-data.ts';
+
+/** hast's name for the data attribute (`data-phasebook-page-data` → dataPhasebookPageData). */
+const PAGE_DATA_PROPERTY = PAGE_DATA_ATTRIBUTE.replace(/-(\w)/g, (_, c) => c.toUpperCase());
 
 /** The `language-*` class of cell code, which Shiki must leave alone. */
 export const CELL_CODE_LANGUAGE = 'js-cell';
@@ -75,13 +81,15 @@ export function analyzeCell(source) {
  * @param {string} source
  * @param {string} id
  * @param {ReturnType<typeof analyzeCell>} analysis
+ * @param {string} [output] HTML of the cell's value when the build could compute it (a typeset formula)
  * @returns {import('hast').Element}
  */
-export function renderCell(source, id, analysis) {
+export function renderCell(source, id, analysis, output) {
   const name = 'spec' in analysis ? analysis.spec.name : null;
   const label = name ? `Code cell ${name}` : 'Code cell';
   /** @type {import('hast').Properties} */
-  const properties = { className: ['cell'], dataCell: id, dataCellHash: hashSource(source) };
+  // The element id makes a cell linkable (`/kepler/#cell-stars`); the prefix keeps it apart from headings' ids.
+  const properties = { className: ['cell'], id: `cell-${id}`, dataCell: id, dataCellHash: hashSource(source) };
   if (name) properties.dataCellName = name;
   if ('spec' in analysis) properties.dataCellSpec = JSON.stringify(analysis.spec);
   else properties.dataCellBuildError = analysis.error;
@@ -95,6 +103,7 @@ export function renderCell(source, id, analysis) {
       ]),
       h('div', { className: ['cell-toolbar'] }, [
         h('span', { className: ['cell-status'], dataCellStatus: '' }),
+        h('span', { className: ['cell-activity'], dataCellActivity: '', ariaLive: 'polite' }),
         h('span', { className: ['cell-hint'] }, [text('Shift+Enter runs')]),
         h('button', { type: 'button', className: ['cell-button'], dataCellReset: '', disabled: true }, [text('Reset')]),
         h('button', { type: 'button', className: ['cell-button', 'cell-run'], dataCellRun: '' }, [text('Run')]),
@@ -102,7 +111,7 @@ export function renderCell(source, id, analysis) {
     ]),
     h('div', { className: ['cell-notice'], dataCellNotice: '', hidden: true }),
     h('div', { className: ['cell-error'], dataCellError: '', ariaLive: 'polite', hidden: true }),
-    h('div', { className: ['cell-output'], dataCellOutput: '' }),
+    h('div', { className: ['cell-output'], dataCellOutput: '' }, output ? /** @type {import('hast').ElementContent[]} */ (fromHtmlIsomorphic(output, { fragment: true }).children) : []),
     h('noscript', {}, [
       h('p', { className: ['cell-noscript'] }, [text('This is a live code cell: turn on JavaScript to run and edit it.')]),
     ]),
@@ -126,23 +135,30 @@ export function assignCellIds(cells) {
 }
 
 /**
- * The plugin. It also records the cell count as `cells` in the remark
- * front matter, so a chapter without cells loads no cell script.
+ * The plugin. It runs the chapter's cells once at build time (precompile.ts)
+ * to compile their models and typeset their formulas, puts a formula that
+ * is a cell's value into the cell's output, and hands the rest to the page
+ * in a `<template data-phasebook-page-data>` at the end of the file's markup
+ * (see pageDataNode). It also records the cell count as `cells`, so a
+ * chapter without cells loads no cell script.
  */
 export function remarkCells() {
   /**
    * @param {import('mdast').Root} tree
    * @param {import('vfile').VFile} file
    */
-  return (tree, file) => {
+  return async (tree, file) => {
     /** @type {Array<{ parent: import('mdast').Parent, index: number, source: string, analysis: ReturnType<typeof analyzeCell> }>} */
     const found = [];
     collectCells(tree, found);
 
     const ids = assignCellIds(found.map(({ analysis }) => ({ name: 'spec' in analysis ? analysis.spec.name : null })));
+    const work = await precompileChapter(
+      found.flatMap(({ source, analysis }, i) => ('spec' in analysis ? [{ id: ids[i], source, spec: analysis.spec }] : [])),
+    );
     found.forEach(({ parent, index, source, analysis }, i) => {
       if ('error' in analysis) file.message(`cell ${ids[i]}: ${analysis.error}`, parent.children[index]);
-      const cell = renderCell(source, ids[i], analysis);
+      const cell = renderCell(source, ids[i], analysis, work.outputs.get(ids[i]));
       // An unknown mdast node with hName/hProperties/hChildren becomes exactly this element.
       parent.children[index] = /** @type {import('mdast').RootContent} */ (/** @type {unknown} */ ({
         type: 'liveCell',
@@ -154,7 +170,19 @@ export function remarkCells() {
     data.astro ??= {};
     data.astro.frontmatter ??= {};
     data.astro.frontmatter.cells = found.length;
+    // Carried by the chapter's own markup, so an MDX file that imports another
+    // (for-teachers imports the template) brings that file's data along too.
+    if (work.data) tree.children.push(/** @type {import('mdast').RootContent} */ (/** @type {unknown} */ (pageDataNode(work.data))));
   };
+}
+
+/**
+ * The build's data for the page (widgets/book/page-data.ts) as an inert
+ * element: JSON in an attribute, which the HTML parser gives back exactly.
+ * @param {import('../../widgets/book/page-data.ts').PageData} data
+ */
+function pageDataNode(data) {
+  return { type: 'phasebookPageData', data: { hName: 'template', hProperties: { [PAGE_DATA_PROPERTY]: JSON.stringify(data) } } };
 }
 
 /**

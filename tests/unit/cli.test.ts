@@ -3,7 +3,8 @@ import { existsSync, mkdtempSync, readdirSync, readFileSync, writeFileSync } fro
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { promisify } from 'node:util';
-import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
+import { afterAll, afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
+import { ensureCli } from '../../bin/cli-bundle.mjs';
 import { main } from '../../widgets/cli/main.ts';
 import { canonicalEquations } from '../../widgets/core/canonical-equations.ts';
 import { parseCSV } from '../../widgets/core/csv.ts';
@@ -17,6 +18,16 @@ const NONLINEAR_PARAMS = ['--param', 'omega0=10', '--param', 'alpha=-2', '--para
 
 let dir: string;
 let stderr: string[];
+const userCache = process.env.PHASEBOOK_CACHE_DIR;
+beforeAll(async () => {
+  // Compiled models go to a scratch cache, not the user's; the spawned runs use the compiled CLI, built here if stale.
+  process.env.PHASEBOOK_CACHE_DIR = mkdtempSync(join(tmpdir(), 'phasebook-cache-'));
+  await ensureCli();
+}, 60_000);
+afterAll(() => {
+  if (userCache === undefined) delete process.env.PHASEBOOK_CACHE_DIR;
+  else process.env.PHASEBOOK_CACHE_DIR = userCache;
+});
 beforeEach(() => {
   dir = mkdtempSync(join(tmpdir(), 'phasebook-cli-'));
   stderr = [];
@@ -51,6 +62,20 @@ describe('phasebook simulate', () => {
     const params = Object.entries(meta.params).flatMap(([k, v]) => ['--param', `${k}=${v}`]);
     await main(['simulate', '--hamiltonian', meta.hamiltonian, '--dof', String(meta.dof), '--initial', meta.initial.join(','), ...params, '--dt', String(meta.dt), '--t-end', '0.5', '--output', again]);
     expect(Array.from(parseCSV(readFileSync(again, 'utf8')).data)).toEqual(Array.from(table.data));
+  });
+
+  it('integrates a --vector-field as written, with its source and H in the JSON meta', async () => {
+    const out = join(dir, 'pendulum.json');
+    const field = '(t, [q, p], dxdt) => { dxdt[0] = p; dxdt[1] = -g*sin(q); }';
+    const h = '(t, [q, p]) => p*p/2 - g*cos(q)';
+    const args = ['simulate', '--vector-field', field, '--hamiltonian', h, '--param', 'g=9.81', '--dof', '1', '--initial', '1,0'];
+    expect(await main([...args, '--t-end', '10', '--every', '100', '--format', 'json', '--output', out])).toBe(0);
+    const { meta, table } = parseJSON(readFileSync(out, 'utf8'));
+    expect(meta).toMatchObject({ route: 'vector-field', vectorField: field, hamiltonian: h, params: { g: 9.81 } });
+    expect(table.columns).toEqual(['t', 'q', 'p', 'H']);
+    expect(table.rows).toBe(201);
+    // The pendulum conserves H = −g cos 1; RK 3/8 at dt = 5e-4 drifts by ~1e-13 over 10 time units.
+    for (let r = 0; r < table.rows; r++) expect(Math.abs(table.data[4 * r + 3] + 9.81 * Math.cos(1))).toBeLessThan(1e-10);
   });
 
   it.each([

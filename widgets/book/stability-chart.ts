@@ -1,4 +1,4 @@
-import './book.css';
+import { compiledModelFor, type BuildOptions } from '../core/canonical-equations.ts';
 import { makeMapping } from '../plots/axis-scale.ts';
 import { pixelRatio, sizeCanvas } from '../plots/canvas.ts';
 import { drawAxes, MARGIN } from '../plots/draw-axes.ts';
@@ -32,9 +32,11 @@ const axis = (a: { from: number; to: number; count?: number }, n: number) =>
  * The stability chart of parametric resonance: Floquet growth rates over two
  * parameters, computed in a worker with a progress bar, the theoretical
  * boundary drawn over it, and a click that hands the clicked parameters to
- * the chapter (which sets them in its simulator).
+ * the chapter (which sets them in its simulator). The model is compiled here
+ * (or taken from `build.store`) and sent to the worker as data, so the
+ * worker never loads mathjs.
  */
-export function stabilityChart(options: StabilityChartOptions): HTMLElement {
+export function stabilityChart(options: StabilityChartOptions, build: BuildOptions = {}): HTMLElement {
   const { x, y, boundaries = [], height = 300 } = options;
   const root = document.createElement('figure');
   root.className = 'pb-stability';
@@ -109,22 +111,15 @@ export function stabilityChart(options: StabilityChartOptions): HTMLElement {
   };
 
   const worker = new Worker(new URL('./stability-worker.ts', import.meta.url), { type: 'module' });
-  const request: StabilityRequest = {
-    hamiltonian: options.hamiltonian,
-    params: options.params,
-    x: { param: x.param, values: xs },
-    y: { param: y.param, values: ys },
-    frequencyParam: options.frequencyParam,
-    stepsPerPeriod: options.stepsPerPeriod ?? 200,
+  const fail = (message: string) => {
+    status.textContent = `Could not compute the chart: ${message}`;
+    status.className = 'pb-error';
+    worker.terminate();
   };
   worker.onmessage = (event: MessageEvent<{ progress?: number; rates?: Float64Array; error?: string }>) => {
     const m = event.data;
     if (m.progress !== undefined) progress.value = m.progress;
-    if (m.error) {
-      status.textContent = `Could not compute the chart: ${m.error}`;
-      status.className = 'pb-error';
-      worker.terminate();
-    }
+    if (m.error) fail(m.error);
     if (m.rates) {
       rates = m.rates;
       const unstable = rates.filter((r) => r > 0).length;
@@ -135,7 +130,20 @@ export function stabilityChart(options: StabilityChartOptions): HTMLElement {
       root.dataset.ready = '';
     }
   };
-  worker.postMessage(request);
+  compiledModelFor({ dof: 1, hamiltonian: options.hamiltonian, params: options.params }, build).then(
+    (model) => {
+      const request: StabilityRequest = {
+        model,
+        params: options.params,
+        x: { param: x.param, values: xs },
+        y: { param: y.param, values: ys },
+        frequencyParam: options.frequencyParam,
+        stepsPerPeriod: options.stepsPerPeriod ?? 200,
+      };
+      worker.postMessage(request);
+    },
+    (error: unknown) => fail((error as Error)?.message ?? String(error)),
+  );
   requestAnimationFrame(draw);
   // The chart is part of a cell's output: if the cell re-runs, this instance is discarded with its worker.
   new MutationObserver((_, observer) => {

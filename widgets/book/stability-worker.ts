@@ -4,10 +4,12 @@
  * Messages in: StabilityRequest. Out: {progress} per row, then {rates} or {error}.
  */
 import { stabilityChart } from '../core/analysis/floquet.ts';
-import { canonicalEquations } from '../core/canonical-equations.ts';
+import type { CompiledModel } from '../core/compiled-model.ts';
+import { modelFromCompiled } from '../core/model-from-compiled.ts';
 
 export interface StabilityRequest {
-  hamiltonian: string;
+  /** compiled on the page (or by the build), so this worker needs no mathjs */
+  model: CompiledModel;
   params: Record<string, number>;
   x: { param: string; values: number[] };
   y: { param: string; values: number[] };
@@ -16,10 +18,10 @@ export interface StabilityRequest {
   stepsPerPeriod: number;
 }
 
-self.onmessage = async (event: MessageEvent<StabilityRequest>) => {
+self.onmessage = (event: MessageEvent<StabilityRequest>) => {
   const request = event.data;
   try {
-    const model = await canonicalEquations({ dof: 1, hamiltonian: request.hamiltonian, params: request.params });
+    const model = modelFromCompiled(request.model, request.params);
     const index = model.paramNames.indexOf(request.frequencyParam);
     if (index < 0) throw new Error(`the model has no parameter ${request.frequencyParam}`);
     const rates = stabilityChart(model, {

@@ -1,4 +1,3 @@
-import './book.css';
 /**
  * A live readout that sets a measured value beside the formula's, with the
  * error the chapter says to expect. Its root carries the numbers as data

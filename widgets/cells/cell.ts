@@ -18,24 +18,42 @@ import { formatError, type CellSpec } from './spec.ts';
 import type { EditStore, SavedEdit } from './storage.ts';
 import type { CellView } from './view.ts';
 
+/** A key that edits text (a character, Enter, Backspace, Delete, Tab), not a shortcut or a move. */
+function isTyping(event: KeyboardEvent): boolean {
+  if (event.ctrlKey || event.metaKey || event.altKey) return false;
+  return event.key.length === 1 || ['Enter', 'Backspace', 'Delete', 'Tab'].includes(event.key);
+}
+
+/** What a cell tells whoever schedules it. */
+export interface CellHooks {
+  /** The cell showed its first value or error. */
+  onFirstResult(): void;
+  /** The cell is about to be defined by `spec`: the cells it reads must run too. */
+  onDefine(spec: CellSpec): void;
+}
+
 export class LiveCell {
   readonly #view: CellView;
   readonly #notebook: Notebook;
   readonly #drafts: DraftKeeper;
   readonly #variable: CellVariable;
-  readonly #onFirstResult: () => void;
+  readonly #hooks: CellHooks;
   #hasResult = false;
+  #started = false;
   /** The text the reader sees, whether or not it runs. */
   #draft: string;
   #editor: CellEditor | null = null;
   #editorLoading: Promise<void> | null = null;
+  /** Keys typed into the static code while the editor loads, replayed into it once mounted. */
+  #typedAhead: string[] = [];
 
-  constructor(view: CellView, notebook: Notebook, store: EditStore, onFirstResult: () => void) {
+  constructor(view: CellView, notebook: Notebook, store: EditStore, hooks: CellHooks) {
     this.#view = view;
     this.#notebook = notebook;
     this.#drafts = new DraftKeeper(store, view.id, view.originalSource, view.hash);
-    this.#onFirstResult = onFirstResult;
+    this.#hooks = hooks;
     this.#draft = view.originalSource;
+    view.setState('waiting');
     this.#variable = notebook.add({
       pending: () => view.setState('pending'),
       fulfilled: (value, name) => {
@@ -52,10 +70,27 @@ export class LiveCell {
       },
     });
     this.#listen();
+    document.addEventListener('phasebook:compiling', () => view.showCompiling());
+  }
+
+  /** The cell's name as the chapter wrote it, for finding the cells that read it. */
+  get name(): string | null {
+    return this.#view.originalSpec?.name ?? null;
+  }
+
+  get root(): HTMLElement {
+    return this.#view.root;
+  }
+
+  /** True once the cell has been defined (it then keeps running as its inputs change). */
+  get started(): boolean {
+    return this.#started;
   }
 
   /** Defines the cell: with the reader's saved edit if it matches this chapter, else the original. */
   async start(): Promise<void> {
+    if (this.#started) return;
+    this.#started = true;
     const starting = this.#drafts.starting();
     if (starting.kind === 'apply') {
       this.#showDraft(starting.source);
@@ -68,6 +103,7 @@ export class LiveCell {
 
   /** Runs what the reader sees now (Run button, Shift+Enter). */
   async run(): Promise<void> {
+    this.#started = true;
     const source = this.#editor?.source ?? this.#draft;
     this.#draft = source;
     this.#view.setBusy(true);
@@ -106,31 +142,34 @@ export class LiveCell {
         hadFocus ? clickAt : undefined,
       );
       if (hadFocus) this.#editor.focus();
+      if (this.#typedAhead.length) this.#editor.typeKeys(this.#typedAhead.splice(0));
+    }).catch((error: unknown) => {
+      // Offline, or the site changed under the page: the static code stays, and the next focus tries again.
+      this.#editorLoading = null;
+      this.#view.setError('compile', `The editor could not load (${formatError(error)}); reload the page to edit this cell.`);
     });
     return this.#editorLoading;
-  }
-
-  /**
-   * The idle preload's way in: leaves a cell alone while the reader has text
-   * selected in it (replacing the `<pre>` would drop the selection); the first
-   * interaction mounts it instead.
-   */
-  mountWhenIdle(): Promise<void> {
-    const selection = document.getSelection();
-    const host = this.#view.editorHost;
-    if (selection && !selection.isCollapsed && host.contains(selection.anchorNode)) return Promise.resolve();
-    return this.mountEditor();
   }
 
   #listen(): void {
     const host = this.#view.editorHost;
     let clickAt: { x: number; y: number } | undefined;
     host.addEventListener('pointerdown', (event) => (clickAt = { x: event.clientX, y: event.clientY }));
-    host.addEventListener('focusin', () => void this.mountEditor(clickAt), { once: true });
+    // Hovering a cell is a hint that the reader may edit it: fetch the editor, mount it on focus.
+    host.addEventListener('pointerenter', () => void loadEditor().catch(() => undefined), { once: true });
+    host.addEventListener('focusin', () => {
+      if (!this.#editor) void this.mountEditor(clickAt);
+    });
     host.addEventListener('keydown', (event) => {
-      if (!this.#editor && event.key === 'Enter' && event.shiftKey) {
+      if (this.#editor) return;
+      if (event.key === 'Enter' && event.shiftKey) {
         event.preventDefault();
         void this.run();
+      } else if (isTyping(event)) {
+        // The editor is still loading: keep the keystroke for it rather than lose it.
+        event.preventDefault();
+        this.#typedAhead.push(event.key);
+        void this.mountEditor(clickAt);
       }
     });
     this.#view.runButton.addEventListener('click', () => void this.run());
@@ -149,6 +188,7 @@ export class LiveCell {
       spec = source === this.#view.originalSource && original ? original : (await loadParser()).parseSource(source);
       const definition = compileCell(source, spec, this.#view.id);
       this.#view.setError('compile', null);
+      this.#hooks.onDefine(spec);
       this.#notebook.define(this.#variable, spec, definition);
       return true;
     } catch (error) {
@@ -163,7 +203,9 @@ export class LiveCell {
     const spec = this.#view.originalSpec;
     try {
       if (!spec) throw new SyntaxError(this.#view.buildError?.replace(/^SyntaxError: /, '') ?? 'this cell could not be parsed');
-      this.#notebook.define(this.#variable, spec, compileCell(this.#view.originalSource, spec, this.#view.id));
+      const definition = compileCell(this.#view.originalSource, spec, this.#view.id);
+      this.#hooks.onDefine(spec);
+      this.#notebook.define(this.#variable, spec, definition);
     } catch (error) {
       this.#view.setError('compile', formatError(error));
       this.#firstResult();
@@ -212,6 +254,6 @@ export class LiveCell {
   #firstResult(): void {
     if (this.#hasResult) return;
     this.#hasResult = true;
-    this.#onFirstResult();
+    this.#hooks.onFirstResult();
   }
 }

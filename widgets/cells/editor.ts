@@ -1,8 +1,8 @@
 /**
  * The cell editor: CodeMirror 6 with a hand-picked minimal setup (no
  * `basicSetup`, about a quarter smaller). This module is the `editor` chunk,
- * imported on the first interaction with a cell or when the browser is idle
- * (editor-loader.ts), never during the first load.
+ * imported when the reader first hovers, clicks or focuses a cell (lazy.ts),
+ * never during the first load.
  *
  * It highlights with Lezer's `tok-*` classes, the same the build uses for the
  * static code, and its theme copies the static `<pre>` box, so swapping one
@@ -10,7 +10,7 @@
  */
 import { EditorState, Prec } from '@codemirror/state';
 import { EditorView, highlightSpecialChars, keymap } from '@codemirror/view';
-import { defaultKeymap, history, historyKeymap } from '@codemirror/commands';
+import { defaultKeymap, deleteCharBackward, deleteCharForward, history, historyKeymap, insertNewlineAndIndent, insertTab } from '@codemirror/commands';
 import { bracketMatching, indentOnInput, syntaxHighlighting } from '@codemirror/language';
 import { classHighlighter } from '@lezer/highlight';
 import { cellJavascript } from './cell-language.ts';
@@ -21,6 +21,8 @@ export interface CellEditor {
   /** Replaces the text as one undoable change (Ctrl+Z brings the old text back). */
   replaceSource(source: string): void;
   focus(): void;
+  /** Applies keys typed before the editor existed, at the cursor: characters, Enter, Tab, Backspace, Delete. */
+  typeKeys(keys: readonly string[]): void;
   destroy(): void;
 }
 
@@ -80,6 +82,15 @@ export function mountEditor(host: HTMLElement, options: EditorOptions, clickAt?:
       view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: source } });
     },
     focus: () => view.focus(),
+    typeKeys(keys) {
+      for (const key of keys) {
+        if (key === 'Enter') insertNewlineAndIndent(view);
+        else if (key === 'Tab') insertTab(view);
+        else if (key === 'Backspace') deleteCharBackward(view);
+        else if (key === 'Delete') deleteCharForward(view);
+        else view.dispatch(view.state.replaceSelection(key), { scrollIntoView: true, userEvent: 'input.type' });
+      }
+    },
     destroy: () => view.destroy(),
   };
 }

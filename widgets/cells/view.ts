@@ -12,6 +12,15 @@ import type { CellSpec } from './spec.ts';
 export type ErrorKind = 'compile' | 'runtime';
 const ERROR_ORDER: readonly ErrorKind[] = ['compile', 'runtime'];
 
+/**
+ * `waiting`: not started yet (it starts when it comes near the view, or when
+ * a started cell reads it); then the runtime's `pending`, `fulfilled` or `rejected`.
+ */
+export type CellState = 'waiting' | 'pending' | 'fulfilled' | 'rejected';
+
+/** A cell pending longer than this shows "running…". */
+const PENDING_NOTICE_MS = 150;
+
 function part<T extends Element>(root: Element, selector: string): T {
   const found = root.querySelector<T>(selector);
   if (!found) throw new Error(`cell ${root.getAttribute('data-cell')} lacks ${selector}`);
@@ -37,6 +46,9 @@ export class CellView {
   readonly #error: HTMLElement;
   readonly #notice: HTMLElement;
   readonly #status: HTMLElement;
+  /** "running…" or "compiling…" while the cell is pending; null in markup from an older build. */
+  readonly #activity: HTMLElement | null;
+  #activityTimer: ReturnType<typeof setTimeout> | undefined;
   readonly #errors = new Map<ErrorKind, string>();
   /** The build's highlighted code, to put back on Reset before an editor exists. */
   readonly #originalCode: Node | null;
@@ -58,6 +70,7 @@ export class CellView {
     this.#error = part(root, '[data-cell-error]');
     this.#notice = part(root, '[data-cell-notice]');
     this.#status = part(root, '[data-cell-status]');
+    this.#activity = root.querySelector('[data-cell-activity]');
   }
 
   /** The build's `<pre>`, until the editor replaces it. */
@@ -73,8 +86,25 @@ export class CellView {
     else code.textContent = source;
   }
 
-  setState(state: 'pending' | 'fulfilled' | 'rejected'): void {
+  /**
+   * The runtime's state of the cell. A cell pending for more than a moment
+   * says so ("running…"), so a slow computation never passes for its old
+   * result; see also {@link showCompiling}.
+   */
+  setState(state: CellState): void {
     this.root.dataset.cellState = state;
+    clearTimeout(this.#activityTimer);
+    if (state === 'pending') this.#activityTimer = setTimeout(() => this.#setActivity('running…'), PENDING_NOTICE_MS);
+    else this.#setActivity('');
+  }
+
+  /** A model is being compiled for the page: a pending cell is waiting for it. */
+  showCompiling(): void {
+    if (this.root.dataset.cellState === 'pending') this.#setActivity('compiling…');
+  }
+
+  #setActivity(text: string): void {
+    if (this.#activity && this.#activity.textContent !== text) this.#activity.textContent = text;
   }
 
   /** A DOM node is shown as itself (kept if it is already shown); anything else through the inspector. */

@@ -10,6 +10,9 @@ const USAGE = `phasebook ${VERSION}: simulate Hamiltonian systems and analyse th
 
 H is a math expression (p^2/2 + omega0^2*q^2/2 + alpha*q^3) or a JS arrow
 function ((t, x) => x[1]**2/2 + x[0]**2/2); --param values are visible to both.
+A vector field ((t, x, dxdt) => { dxdt[0] = x[1]; dxdt[1] = -x[0]; }) is
+integrated as written. Compiled models are cached in $PHASEBOOK_CACHE_DIR,
+else $XDG_CACHE_HOME/phasebook/models, else ~/.cache/phasebook/models.
 `;
 
 /**

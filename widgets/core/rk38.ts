@@ -12,7 +12,7 @@ import type { Stepper, VectorField } from './types.ts';
  *
  * This generic stepper calls a vector field through a function, for the
  * routes whose field is not known symbolically; expression models get a
- * fused stepper generated per model instead (see `fusedStepper`).
+ * fused stepper generated per model instead (see `fusedStepperSource`).
  */
 export function rk38(field: VectorField, dim: number): Stepper {
   // Stage buffers are allocated once per stepper: nothing is allocated per step.

@@ -66,5 +66,5 @@ export interface Model {
   /** dx/dt at one state, for readouts and tests. */
   readonly field: VectorField;
   /** LaTeX of H and of Hamilton's equations, when H is symbolic. */
-  readonly latex?: { hamiltonian: string; equations: string[] };
+  readonly latex?: { readonly hamiltonian: string; readonly equations: readonly string[] };
 }

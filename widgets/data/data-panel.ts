@@ -2,10 +2,19 @@ import { button, field, h, setFieldError } from '../controls/dom.ts';
 import { parseBound } from '../controls/parse.ts';
 import type { Simulation } from '../core/simulation.ts';
 import { resolveTheme } from '../plots/colors.ts';
-import { downloadBlob, downloadText, onBackground, pngBlob } from './download.ts';
-import { csvParts, jsonParts } from './export.ts';
 import { exportName, selectRows, type Selection } from './interval.ts';
-import { exportMeta } from '../core/export-meta.ts';
+
+/**
+ * The writers and the download helpers, loaded when the reader first points
+ * at the panel or asks for a file: a simulator that is only watched never
+ * loads them.
+ */
+const loadExporters = () =>
+  Promise.all([import('./export.ts'), import('./download.ts'), import('../core/export-meta.ts')]).then(
+    ([exporters, download, meta]) => ({ ...exporters, ...download, ...meta }),
+  );
+let exporters: ReturnType<typeof loadExporters> | undefined;
+const exportersReady = () => (exporters ??= loadExporters());
 
 /** A plot a PNG can be made of. */
 export interface PlotSource {
@@ -42,8 +51,10 @@ export class DataPanel {
       h('span', 'pb-data-title', {}, 'Data'), t0.wrapper, t1.wrapper, this.summary,
       h('span', 'pb-data-actions', {}, csv, json, this.plotSelect, png), this.message);
 
-    csv.addEventListener('click', () => this.exportRows('csv'));
-    json.addEventListener('click', () => this.exportRows('json'));
+    this.element.addEventListener('pointerenter', () => void exportersReady().catch(() => undefined), { once: true });
+    this.element.addEventListener('focusin', () => void exportersReady().catch(() => undefined), { once: true });
+    csv.addEventListener('click', () => void this.exportRows('csv'));
+    json.addEventListener('click', () => void this.exportRows('json'));
     png.addEventListener('click', () => void this.exportPng());
     for (const f of [t0, t1]) f.input.addEventListener('input', () => this.update(this.simulation, true));
     this.listPlots();
@@ -87,10 +98,19 @@ export class DataPanel {
     return selection;
   }
 
-  private exportRows(format: 'csv' | 'json'): void {
+  private async exportRows(format: 'csv' | 'json'): Promise<void> {
+    let tools: Awaited<ReturnType<typeof loadExporters>>;
+    try {
+      tools = await exportersReady();
+    } catch (error) {
+      exporters = undefined;
+      return this.say(`The download could not start: ${error instanceof Error ? error.message : String(error)}`);
+    }
+    // Selected after the wait, so the rows are those recorded now.
     const simulation = this.simulation;
     const selection = this.select(true);
     if (!simulation || !selection) return;
+    const { csvParts, jsonParts, downloadText, exportMeta } = tools;
     const { record } = simulation;
     const name = exportName(selection.first, selection.last, format);
     if (format === 'csv') downloadText(csvParts(record, selection.from, selection.to), 'text/csv', name);
@@ -103,6 +123,7 @@ export class DataPanel {
     const plot = this.plots()[Number(this.plotSelect.value) || 0];
     if (!plot) return this.say('There is no plot to save.');
     try {
+      const { onBackground, downloadBlob, pngBlob } = await exportersReady();
       const canvas = onBackground(plot.canvas(), resolveTheme(this.element).background);
       const name = `phasebook-${plot.name.replace(/[^a-z0-9]+/gi, '-').toLowerCase()}.png`;
       downloadBlob(await pngBlob(canvas), name);

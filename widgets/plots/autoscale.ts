@@ -1,4 +1,4 @@
-import { scaleLinear } from 'd3-scale';
+import { scaleLinear } from './scale.ts';
 import { symexp, symlog, type Domain, type YScaleKind } from './y-map.ts';
 
 /**

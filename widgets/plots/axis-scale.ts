@@ -1,4 +1,4 @@
-import { scaleLinear, scaleSymlog, type ScaleContinuousNumeric } from 'd3-scale';
+import { scaleLinear, scaleSymlog, type NumberScale } from './scale.ts';
 import { transform, type AxisKind } from './extent.ts';
 
 /**
@@ -12,7 +12,7 @@ export interface Mapping {
   readonly c: number;
   readonly a: number;
   readonly b: number;
-  readonly scale: ScaleContinuousNumeric<number, number>;
+  readonly scale: NumberScale;
 }
 
 export function makeMapping(kind: AxisKind, domain: readonly [number, number], range: readonly [number, number], c = 1): Mapping {

@@ -1,4 +1,4 @@
-import { scaleLinear } from 'd3-scale';
+import { scaleLinear } from './scale.ts';
 
 /**
  * A rectangle of the data plane, [x0, x1] × [y0, y1]. Plots keep one per

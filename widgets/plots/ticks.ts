@@ -1,4 +1,4 @@
-import { scaleLinear } from 'd3-scale';
+import { scaleLinear } from './scale.ts';
 import type { Domain, YScaleKind } from './y-map.ts';
 
 /** Tick values and their labels. */

@@ -1,4 +1,4 @@
-import { scaleLinear } from 'd3-scale';
+import { scaleLinear } from './scale.ts';
 import type { AxisStyle } from './axes.ts';
 import { drawXTicks } from './axes.ts';
 import type { Context, Surface, SurfaceFactory } from './canvas.ts';

@@ -1,4 +1,4 @@
-import { scaleLinear } from 'd3-scale';
+import { scaleLinear } from './scale.ts';
 import { h as el } from '../controls/dom.ts';
 import { drawXFrame, drawXTicks, drawYAxis, MARGIN, type Box } from './axes.ts';
 import { multiples, timeTicks } from './time-axis.ts';

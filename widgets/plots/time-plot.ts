@@ -1,4 +1,3 @@
-import '../widgets.css';
 import type { Simulation } from '../core/simulation.ts';
 import type { View } from '../simulator/view.ts';
 import { MARGIN } from './axes.ts';

@@ -1,4 +1,4 @@
-import { scaleLinear, scaleSymlog, type ScaleContinuousNumeric } from 'd3-scale';
+import { scaleLinear, scaleSymlog, type NumberScale } from './scale.ts';
 
 /**
  * The vertical mapping m_y of the paper (§5): linear, or the symmetric
@@ -51,7 +51,7 @@ export function mapY(m: YMap, y: number): number {
 }
 
 /** The d3 scale with the same mapping, for axes and ticks. */
-export function yScale(kind: YScaleKind, domain: Domain, range: Domain): ScaleContinuousNumeric<number, number> {
+export function yScale(kind: YScaleKind, domain: Domain, range: Domain): NumberScale {
   const scale = kind === 'symlog' ? scaleSymlog().constant(1) : scaleLinear();
   return scale.domain(domain).range(range);
 }

@@ -1,4 +1,5 @@
 import { capacityFor } from '../core/capacity.ts';
+import type { HamiltonianSpec } from '../core/canonical-equations.ts';
 import type { DerivedSeries } from '../core/simulation.ts';
 import type { Model } from '../core/types.ts';
 
@@ -33,6 +34,28 @@ export function checkOptionNames(options: object): void {
     const near = KNOWN.find((k) => editDistance(k.toLowerCase(), key.toLowerCase()) <= 2);
     throw new Error(`simulator: unknown option "${key}"${near ? `; did you mean "${near}"?` : ''}`);
   }
+}
+
+/** What simulator() options say about the model, when they define it rather than pass one. */
+export interface ModelOptions extends Omit<HamiltonianSpec, 'dof'> {
+  dof?: number;
+  initial?: unknown;
+}
+
+/**
+ * The model spec of simulator() options that define a model (hamiltonian,
+ * vectorField or gradient), with dof taken from `initial` when not given.
+ * The build reads the same spec from a chapter's cells, so the model it
+ * compiles ahead is the one the simulator asks for.
+ */
+export function modelSpec(options: ModelOptions): HamiltonianSpec {
+  if (options.hamiltonian === undefined && !options.vectorField && !options.gradient) {
+    throw new Error('simulator: give a hamiltonian (or a model, vectorField or gradient)');
+  }
+  const dof = options.dof ?? flattenInitial(options.initial).dim / 2;
+  if (!Number.isInteger(dof) || dof < 1) throw new Error(`simulator: dof must be a whole number ≥ 1, not ${dof}`);
+  const { hamiltonian, vectorField, gradient, params, coordinates, momenta, differentiation } = options;
+  return { dof, hamiltonian, vectorField, gradient, params, coordinates, momenta, differentiation };
 }
 
 /**

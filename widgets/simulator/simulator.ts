@@ -1,14 +1,13 @@
-import '../widgets.css';
-import { canonicalEquations, type HamiltonianSpec } from '../core/canonical-equations.ts';
+import { canonicalEquations, type BuildOptions, type HamiltonianSpec } from '../core/canonical-equations.ts';
 import { Simulation, type DerivedSeries } from '../core/simulation.ts';
 import type { Model } from '../core/types.ts';
-import { phasePortrait, type PhasePortraitOptions } from '../plots/phase-portrait.ts';
-import { spectrumView, type SpectrumViewOptions } from '../plots/spectrum-view.ts';
-import { timePlot, type TimePlotOptions } from '../plots/time-plot.ts';
-import { trajectoryView, type TrajectoryOptions } from '../plots/trajectory-view.ts';
+import type { PhasePortraitOptions } from '../plots/phase-portrait.ts';
+import type { SpectrumViewOptions } from '../plots/spectrum-view.ts';
+import type { TimePlotOptions } from '../plots/time-plot.ts';
+import type { TrajectoryOptions } from '../plots/trajectory-view.ts';
 import { mount, type SimulatorElement } from './mount.ts';
 import {
-  BATCH_EVERY, checkOptionNames, defaultCapacity, derivedSeries, flattenInitial, oneLine, recordWidth, viewNames,
+  BATCH_EVERY, checkOptionNames, defaultCapacity, derivedSeries, flattenInitial, modelSpec, oneLine, recordWidth, viewNames,
   type DerivedFunction, type ViewName,
 } from './options.ts';
 import type { View } from './view.ts';
@@ -53,25 +52,30 @@ export interface SimulatorOptions {
   label?: string;
 }
 
-const FACTORIES: Record<ViewName, (o: SimulatorOptions) => View> = {
-  time: (o) => timePlot(o.timePlot),
-  trajectory: (o) => trajectoryView(o.trajectory),
-  phase: (o) => phasePortrait(o.phase),
-  spectrum: (o) => spectrumView(o.spectrum),
+/** Each view's module loads only when a simulator shows that view. */
+const FACTORIES: Record<ViewName, (o: SimulatorOptions) => Promise<View>> = {
+  time: (o) => import('../plots/time-plot.ts').then((m) => m.timePlot(o.timePlot)),
+  trajectory: (o) => import('../plots/trajectory-view.ts').then((m) => m.trajectoryView(o.trajectory)),
+  phase: (o) => import('../plots/phase-portrait.ts').then((m) => m.phasePortrait(o.phase)),
+  spectrum: (o) => import('../plots/spectrum-view.ts').then((m) => m.spectrumView(o.spectrum)),
 };
 
 /**
  * A running simulation with its controls, readouts, views and data panel:
  * the paper's simulator as one widget. Resolves to the root element
  * (data-widget="simulator", data-ready once every view has drawn); rejects
- * with a one-line Error when the options are wrong.
+ * with a one-line Error when the options are wrong. `build` passes on how
+ * models are built (the page's compiled models, see canonicalEquations).
  */
-export async function simulator(options: SimulatorOptions): Promise<SimulatorElement> {
+export async function simulator(options: SimulatorOptions, build: BuildOptions = {}): Promise<SimulatorElement> {
   if (typeof options !== 'object' || options === null) throw new Error('simulator: pass an options object, e.g. simulator({hamiltonian, initial})');
   checkOptionNames(options);
   checkNumbers(options);
   const names = viewNames(options.views);
-  const model = await buildModel(options);
+  // The views' modules load while the model is built.
+  const loading = Promise.all(names.map((name) => FACTORIES[name](options)));
+  loading.catch(() => undefined);
+  const model = await buildModel(options, build);
   const { values, count } = flattenInitial(options.initial, model.dim);
   const derived = derivedSeries(options.derived, model);
   checkEvaluates(model, values, derived);
@@ -85,24 +89,18 @@ export async function simulator(options: SimulatorOptions): Promise<SimulatorEle
     }
   };
   const simulation = make(options.dt);
-  const views = names.map((name) => FACTORIES[name](options));
+  const views = await loading;
   return mount(options, model, simulation, views, make);
 }
 
-async function buildModel(options: SimulatorOptions): Promise<Model> {
+async function buildModel(options: SimulatorOptions, build: BuildOptions): Promise<Model> {
   if (options.model) {
     if (options.dof !== undefined && options.dof !== options.model.dof) throw new Error(`simulator: dof ${options.dof} does not match the model's ${options.model.dof}`);
     return options.model;
   }
-  if (options.hamiltonian === undefined && !options.vectorField && !options.gradient) {
-    throw new Error('simulator: give a hamiltonian (or a model, vectorField or gradient)');
-  }
-  let dof = options.dof;
-  if (dof === undefined) dof = flattenInitial(options.initial).dim / 2;
-  if (!Number.isInteger(dof) || dof < 1) throw new Error(`simulator: dof must be a whole number ≥ 1, not ${dof}`);
-  const { hamiltonian, vectorField, gradient, params, coordinates, momenta, differentiation } = options;
+  const spec = modelSpec(options);
   try {
-    return await canonicalEquations({ dof, hamiltonian, vectorField, gradient, params, coordinates, momenta, differentiation });
+    return await canonicalEquations(spec, build);
   } catch (error) {
     throw new Error(`simulator: ${oneLine(error)}`);
   }

@@ -2,19 +2,30 @@ import { describe, expect, test } from 'vitest';
 import { assignCellIds, hashSource, remarkCells } from '../../../src/lib/remark-cells.mjs';
 
 /** Runs the plugin on a hand-made tree of fenced code blocks. */
-function transform(fences) {
+async function transform(fences) {
   const tree = {
     type: 'root',
     children: fences.map(([meta, value]) => ({ type: 'code', lang: 'js', meta, value })),
   };
   const file = { data: {}, messages: [], message(text) { this.messages.push(text); } };
-  remarkCells()(tree, file);
+  await remarkCells()(tree, file);
   return { tree, file };
 }
 
+/** The page data the plugin appended, parsed. */
+function pageData(tree) {
+  const node = tree.children.find((child) => child.type === 'phasebookPageData');
+  return node ? JSON.parse(node.data.hProperties.dataPhasebookPageData) : null;
+}
+
+/** All text under a hast node. */
+function textOf(node) {
+  return node.type === 'text' ? node.value : (node.children ?? []).map(textOf).join('');
+}
+
 describe('remarkCells()', () => {
-  test('turns ```js cell fences into figures carrying id, hash and the build-time parse', () => {
-    const { tree, file } = transform([['cell', 'omega = 10'], ['cell', 'period = 2 * PI / omega'], [null, 'not a cell']]);
+  test('turns ```js cell fences into figures carrying id, hash and the build-time parse', async () => {
+    const { tree, file } = await transform([['cell', 'omega = 10'], ['cell', 'period = 2 * PI / omega'], [null, 'not a cell']]);
     const [omega, period, plain] = tree.children;
     expect(omega.type).toBe('liveCell');
     expect(omega.data.hName).toBe('figure');
@@ -26,8 +37,8 @@ describe('remarkCells()', () => {
     expect(file.data.astro.frontmatter.cells).toBe(2);
   });
 
-  test('highlights the source with the editor\'s tok-* classes and keeps its text exact', () => {
-    const { tree } = transform([['cell', '{\n  return "a";\n}\n\n']]);
+  test('highlights the source with the editor\'s tok-* classes and keeps its text exact', async () => {
+    const { tree } = await transform([['cell', '{\n  return "a";\n}\n\n']]);
     const pre = JSON.stringify(tree.children[0].data.hChildren);
     expect(pre).toContain('tok-keyword');
     expect(pre).toContain('tok-string');
@@ -38,11 +49,42 @@ describe('remarkCells()', () => {
     expect(text.join('')).toBe('{\n  return "a";\n}');
   });
 
-  test('renders a cell that does not parse, with its error, instead of failing the build', () => {
-    const { tree, file } = transform([['cell', 'x = = 1']]);
+  test('renders a cell that does not parse, with its error, instead of failing the build', async () => {
+    const { tree, file } = await transform([['cell', 'x = = 1']]);
     expect(tree.children[0].data.hProperties.dataCellBuildError).toBe('SyntaxError: Unexpected token (1:4)');
     expect(tree.children[0].data.hProperties.dataCellSpec).toBeUndefined();
     expect(file.messages).toHaveLength(1);
+  });
+});
+
+describe('remarkCells() at build time', () => {
+  test('compiles the models the cells define and puts the typeset equations into the cell that shows them', async () => {
+    const { tree } = await transform([
+      ['cell', 'params = ({omega: 3})'],
+      ['cell', 'H = "p^2/2 + omega^2*q^2/2"'],
+      ['cell', 'model = canonicalEquations({dof: 1, hamiltonian: H, params})'],
+      ['cell', 'equations(model)'],
+      ['cell', 'sim = simulator({hamiltonian: "p^2/2 - cos(q)", initial: [1, 0], invalidation})'],
+    ]);
+    const data = pageData(tree);
+    expect(data.format).toBe(1);
+    const sources = data.models.map((m) => JSON.parse(m.key)[2]);
+    expect(sources.sort()).toEqual(['p^2/2 + omega^2*q^2/2', 'p^2/2 - cos(q)']);
+    expect(data.models.every((m) => m.route === 'expression' && typeof m.code.stepper === 'string')).toBe(true);
+    // The harmonic oscillator's equations, derived at build time: q̇ = p, ṗ = −ω²q.
+    const equationsCell = tree.children[3].data;
+    const output = equationsCell.hChildren.find((c) => c.properties?.dataCellOutput !== undefined);
+    const tex = output.children[0].children[0].properties.dataTexSource;
+    expect(tex).toContain('\\dot{q}');
+    expect(tex).toContain('\\omega');
+    expect(textOf(output)).toContain('Exact symbolic derivatives');
+    // A formula already on the page is not carried twice in the data.
+    expect(Object.keys(data.typeset)).toEqual([]);
+  });
+
+  test('adds no page data when no cell compiles or typesets anything', async () => {
+    const { tree } = await transform([['cell', 'x = 1'], ['cell', 'y = x + 1']]);
+    expect(pageData(tree)).toBeNull();
   });
 });
 

@@ -1,8 +1,7 @@
 import type { MathNode } from 'mathjs';
 import { InputError } from '../errors.ts';
-import type { Model, Route } from '../types.ts';
 import { SUPPORTED_FUNCTIONS } from './emit.ts';
-import { evaluatorSource, fusedStepper, type RateExpressions } from './fused-stepper.ts';
+import { evaluatorSource, fusedStepperSource, type RateExpressions } from './fused-stepper.ts';
 import { CONSTANTS, checkName, stateNames } from './names.ts';
 import { latexOf } from './latex.ts';
 import { loadMathjs, type MathJs } from './mathjs.ts';
@@ -11,29 +10,30 @@ export interface ExpressionSpec {
   /** H in mathjs syntax, e.g. `p^2/2 + omega0^2*q^2/2 + alpha*q^3` */
   source: string;
   dof: number;
-  params?: Readonly<Record<string, number>>;
+  paramNames?: readonly string[];
   coordinates?: readonly string[];
   momenta?: readonly string[];
-  /** The route to report (a translated JS function reports 'js-translated'). */
-  route?: Route;
-  /** The text to record as H's source, when it differs from `source`. */
-  original?: string;
 }
 
+/** The generated code and LaTeX of an expression H (see CompiledModel). */
+export interface CompiledExpression {
+  names: string[];
+  code: { stepper: string; field: string; hamiltonian: string };
+  latex: { hamiltonian: string; equations: string[] };
+}
 
 /**
- * Builds a model from H as a math expression: exact symbolic partial
- * derivatives (mathjs `derivative`) compiled into one fused RK 3/8 stepper.
+ * Compiles H given as a math expression: exact symbolic partial derivatives
+ * (mathjs `derivative`) written out as one fused RK 3/8 stepper and two
+ * evaluators, all as source text for `new Function`.
  */
-export async function expressionModel(spec: ExpressionSpec): Promise<Model> {
+export async function compileExpression(spec: ExpressionSpec): Promise<CompiledExpression> {
   const math = await loadMathjs();
   const { names, aliases } = stateNames(spec.dof, spec.coordinates, spec.momenta);
-  const params = spec.params ?? {};
-  const paramNames = Object.keys(params);
+  const paramNames = spec.paramNames ?? [];
   for (const name of paramNames) {
     checkName(name);
     if (names.includes(name)) throw new InputError(`the parameter ${name} has the name of a state component`);
-    if (!Number.isFinite(params[name])) throw new InputError(`the parameter ${name} must be a finite number, not ${params[name]}`);
   }
   const hamiltonian = prepare(math, parseExpression(math, spec.source), names, aliases, paramNames);
   const dof = spec.dof;
@@ -42,26 +42,14 @@ export async function expressionModel(spec: ExpressionSpec): Promise<Model> {
     return { node: differentiate(math, hamiltonian, conjugate), negate: i >= dof };
   });
   const model: RateExpressions = { names, paramNames, rates };
-  const values = Float64Array.from(paramNames, (n) => params[n]);
-  const h = new Function(evaluatorSource(model, [{ node: hamiltonian, negate: false }], 'scalar'))()(values);
-  const field = new Function(evaluatorSource(model, rates, 'vector'))()(values);
-  let latex: Model['latex'];
   return {
-    dof,
-    dim: 2 * dof,
     names,
-    paramNames,
-    params: values,
-    route: spec.route ?? 'expression',
-    accuracy:
-      'exact symbolic derivatives: the only errors are the RK 3/8 truncation error, O(dt⁴) over a fixed time, and rounding',
-    source: spec.original ?? spec.source,
-    stepper: fusedStepper(model),
-    hamiltonian: h,
-    field,
-    get latex() {
-      return (latex ??= latexOf(math, hamiltonian, rates, names, dof));
+    code: {
+      stepper: fusedStepperSource(model),
+      field: evaluatorSource(model, rates, 'vector'),
+      hamiltonian: evaluatorSource(model, [{ node: hamiltonian, negate: false }], 'scalar'),
     },
+    latex: latexOf(math, hamiltonian, rates, names, dof),
   };
 }
 

@@ -1,5 +1,4 @@
 import type { MathNode } from 'mathjs';
-import type { Stepper } from '../types.ts';
 import { Emitter } from './emit.ts';
 import { CONSTANTS } from './names.ts';
 
@@ -85,11 +84,6 @@ export function fusedStepperSource(model: RateExpressions): string {
   idx.forEach((i) => out.push(`$x[$o + ${i}] = ${y(i)};`));
   out.push(`}`, `return $steps;`, `};`);
   return out.join('\n');
-}
-
-export function fusedStepper(model: RateExpressions): Stepper {
-  const advance = new Function(fusedStepperSource(model))() as Stepper['advance'];
-  return { dim: model.names.length, advance };
 }
 
 /**

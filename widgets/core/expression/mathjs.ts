@@ -13,3 +13,12 @@ let instance: Promise<MathJs> | undefined;
 export function loadMathjs(): Promise<MathJs> {
   return (instance ??= import('./mathjs-instance.ts').then((m) => m.math));
 }
+
+/**
+ * Hands over an instance imported statically, for hosts where a dynamic
+ * import cannot run when it is needed (the build runs the compiler from
+ * Astro's config, whose module loader is closed by then).
+ */
+export function provideMathjs(math: MathJs): void {
+  instance = Promise.resolve(math);
+}

@@ -18,6 +18,11 @@ export function loadAcorn(): Promise<Acorn> {
   return (acorn ??= import('acorn'));
 }
 
+/** Hands over acorn imported statically, for hosts where a dynamic import cannot run (see provideMathjs). */
+export function provideAcorn(module: Acorn): void {
+  acorn = Promise.resolve(module);
+}
+
 /** Parses JS function source, turning a syntax error into one line with its position. */
 export async function parseFunction(source: string) {
   const { parse } = await loadAcorn();

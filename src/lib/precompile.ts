@@ -1,0 +1,153 @@
+/**
+ * The build's share of a chapter's work: run its cells once, as written,
+ * headless (widgets/cells/headless.ts), and do ahead what the page would
+ * otherwise do with its heaviest modules:
+ *
+ * - compile every model the cells define — through canonicalEquations, a
+ *   simulator's `hamiltonian` option or a stability chart — into
+ *   compiled-model data, so the page needs no mathjs (or acorn) until the
+ *   reader changes H;
+ * - typeset every formula they show — `equations(model)` and `tex(…)` —
+ *   with KaTeX, so the page needs no KaTeX's JavaScript, and put the HTML
+ *   of a cell whose value is a formula into the cell's output, so it is
+ *   there at the first paint (and without JavaScript).
+ *
+ * Only the catalogue entries that lead to such work do anything here; the
+ * others (widgets, simulations, analyses) fail with a note, and the cells
+ * that need them simply have no value at build time. Nothing here decides
+ * what the page shows: a stale or missing result makes the page do the work
+ * itself, as it does for a reader's edit.
+ */
+import * as acorn from 'acorn';
+import katex from 'katex';
+import { compiledModelFor, canonicalEquations, type HamiltonianSpec } from '../../widgets/core/canonical-equations.ts';
+import { compileModel } from '../../widgets/core/compile-model.ts';
+import type { CompiledModel } from '../../widgets/core/compiled-model.ts';
+import { provideMathjs } from '../../widgets/core/expression/mathjs.ts';
+import { math } from '../../widgets/core/expression/mathjs-instance.ts';
+import { provideAcorn } from '../../widgets/core/js-function/compile.ts';
+import type { Model } from '../../widgets/core/types.ts';
+import { memoryStore, PAGE_DATA_FORMAT, type PageData } from '../../widgets/book/page-data.ts';
+import { equationsHtml, equationsLatex, katexOptions, texHtml, typesetKey } from '../../widgets/book/typeset.ts';
+import { standardValues } from '../../widgets/cells/globals.ts';
+import { runHeadless, type HeadlessCell } from '../../widgets/cells/headless.ts';
+import { createLibrary } from '../../widgets/library.ts';
+import { modelSpec, type ModelOptions } from '../../widgets/simulator/options.ts';
+
+const PRERENDERED = Symbol('phasebook.prerendered');
+
+/** A cell value the build can show before any script runs, with the typeset formulas it holds. */
+interface Prerendered {
+  readonly [PRERENDERED]: { html: string; keys: string[] };
+}
+
+/** The text column's width for the `width` builtin; the page reports the real one. */
+const BUILD_WIDTH = 640;
+
+export interface ChapterWork {
+  /** The page's data (book/page-data.ts), or null when the cells need nothing compiled or typeset. */
+  readonly data: PageData | null;
+  /** HTML for the outputs of cells whose value is a formula, by cell id. */
+  readonly outputs: ReadonlyMap<string, string>;
+  /** Why cells failed at build time, by cell id: for authors, never shown to readers. */
+  readonly failures: ReadonlyMap<string, string>;
+}
+
+// Astro runs this from its config, whose module loader is closed by the time
+// the cells run: everything the compiler would import on demand is imported here.
+provideMathjs(math);
+provideAcorn(acorn);
+
+class NotAtBuildTime extends Error {
+  override name = 'NotAtBuildTime';
+}
+
+function prerendered(html: string, keys: string[]): Prerendered {
+  return { [PRERENDERED]: { html, keys } };
+}
+
+function isPrerendered(value: unknown): value is Prerendered {
+  return typeof value === 'object' && value !== null && PRERENDERED in value;
+}
+
+/** Does the chapter's work ahead: see the module comment. */
+export async function precompileChapter(cells: readonly HeadlessCell[]): Promise<ChapterWork> {
+  const models: CompiledModel[] = [];
+  const store = memoryStore([]);
+  const recording = {
+    get: (key: string) => store.get(key),
+    put(model: CompiledModel) {
+      models.push(model);
+      store.put?.(model);
+    },
+  };
+  const build = { store: recording, compile: compileModel };
+  const typeset = new Map<string, string>();
+  const typesetOnce = (source: string, display: boolean): string => {
+    const key = typesetKey(source, display);
+    let html = typeset.get(key);
+    if (html === undefined) typeset.set(key, (html = katex.renderToString(source, katexOptions(display))));
+    return html;
+  };
+  const compile = async (spec: HamiltonianSpec) => {
+    if (spec.hamiltonian !== undefined && !spec.vectorField && !spec.gradient) {
+      await compiledModelFor({ ...spec, hamiltonian: spec.hamiltonian }, build);
+    }
+  };
+
+  const catalogue: Record<string, unknown> = {};
+  for (const name of Object.keys(createLibrary({ models: store, typeset: new Map() }))) {
+    // A plain function, so that `new Simulation(…)` fails with this message too.
+    catalogue[name] = function notHere() {
+      throw new NotAtBuildTime(`${name} runs in the page, not at build time`);
+    };
+  }
+  Object.assign(catalogue, {
+    canonicalEquations: (spec: HamiltonianSpec) => canonicalEquations(spec, build),
+    simulator: async (options: ModelOptions & { model?: Model }) => {
+      if (!options.model) await compile(modelSpec(options));
+      throw new NotAtBuildTime('simulator runs in the page');
+    },
+    stabilityChart: async (options: { hamiltonian: string; params: Record<string, number> }) => {
+      await compile({ dof: 1, hamiltonian: options.hamiltonian, params: options.params });
+      throw new NotAtBuildTime('stabilityChart runs in the page');
+    },
+    equations: async (model: Model | Promise<Model>) => {
+      const m = await model;
+      if (!m.latex) throw new NotAtBuildTime('nothing to typeset');
+      const source = equationsLatex(m.latex);
+      return prerendered(equationsHtml(source, typesetOnce(source, true), m.accuracy), [typesetKey(source, true)]);
+    },
+    tex: (source: string, options: { display?: boolean } = {}) => {
+      const display = options.display !== false;
+      const text = String(source);
+      return prerendered(texHtml(typesetOnce(text, display), display, text), [typesetKey(text, display)]);
+    },
+  });
+  const builtins = {
+    ...standardValues(),
+    ...catalogue,
+    html: () => {
+      throw new NotAtBuildTime('html builds DOM in the page');
+    },
+    width: BUILD_WIDTH,
+    now: 0,
+  };
+
+  const results = await runHeadless(cells, builtins, { timeoutMs: 20_000 });
+  const outputs = new Map<string, string>();
+  const failures = new Map<string, string>();
+  for (const [id, result] of results) {
+    if ('error' in result) {
+      failures.set(id, `${result.error.name}: ${result.error.message}`);
+    } else if (isPrerendered(result.value)) {
+      const { html, keys } = result.value[PRERENDERED];
+      outputs.set(id, html);
+      // The page finds these formulas in the cell's output; the table need not carry them twice.
+      for (const key of keys) typeset.delete(key);
+    }
+  }
+  const data: PageData | null =
+    models.length || typeset.size ? { format: PAGE_DATA_FORMAT, models, typeset: Object.fromEntries(typeset) } : null;
+  return { data, outputs, failures };
+}

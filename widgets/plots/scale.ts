@@ -1,0 +1,94 @@
+/**
+ * Linear and symlog scales for the plots: d3's ticks, nice domains and tick
+ * formats (d3-array, d3-scale's tickFormat) around a plain affine map.
+ *
+ * d3-scale's own continuous scales interpolate through d3-interpolate,
+ * which brings d3-color with it: about 7 kB gzip on every page with a plot,
+ * for colour and string interpolation the plots never use (they map numbers
+ * to pixels). These scales keep d3's behaviour for what the plots do use,
+ * domain, range, invert, ticks, tickFormat and nice, and leave the rest.
+ */
+import { nice as niceDomain, ticks as linearTicks } from 'd3-array';
+import { tickFormat as d3TickFormat } from 'd3-scale';
+
+export interface NumberScale {
+  (value: number): number;
+  domain(): [number, number];
+  domain(domain: readonly [number, number] | readonly number[]): this;
+  range(): [number, number];
+  range(range: readonly [number, number] | readonly number[]): this;
+  invert(pixel: number): number;
+  /** About `count` round values in the domain (d3's 1-2-5 ticks, evenly spaced in data). */
+  ticks(count?: number): number[];
+  /** The label format d3 picks for those ticks. */
+  tickFormat(count?: number, specifier?: string): (value: number) => string;
+  /** Extends the domain to round values, as d3's `nice`. */
+  nice(count?: number): this;
+}
+
+interface Transform {
+  forward(v: number): number;
+  inverse(u: number): number;
+}
+
+const identity: Transform = { forward: (v) => v, inverse: (u) => u };
+
+function scale(transform: () => Transform): NumberScale {
+  let d: [number, number] = [0, 1];
+  let r: [number, number] = [0, 1];
+  // pixel = a·T(v) + b, refreshed whenever the domain, range or transform changes.
+  let a = 1;
+  let b = 0;
+  const update = () => {
+    const t = transform();
+    const u0 = t.forward(d[0]);
+    const u1 = t.forward(d[1]);
+    a = u1 === u0 ? 0 : (r[1] - r[0]) / (u1 - u0);
+    b = u1 === u0 ? (r[0] + r[1]) / 2 : r[0] - a * u0;
+  };
+  const s = ((v: number) => a * transform().forward(v) + b) as NumberScale;
+  s.domain = ((value?: readonly number[]) => {
+    if (value === undefined) return [d[0], d[1]];
+    d = [Number(value[0]), Number(value[1])];
+    update();
+    return s;
+  }) as NumberScale['domain'];
+  s.range = ((value?: readonly number[]) => {
+    if (value === undefined) return [r[0], r[1]];
+    r = [Number(value[0]), Number(value[1])];
+    update();
+    return s;
+  }) as NumberScale['range'];
+  s.invert = (pixel) => transform().inverse(a === 0 ? transform().forward(d[0]) : (pixel - b) / a);
+  s.ticks = (count = 10) => (d[0] <= d[1] ? linearTicks(d[0], d[1], count) : linearTicks(d[1], d[0], count).reverse());
+  s.tickFormat = (count = 10, specifier) => d3TickFormat(d[0], d[1], count, specifier);
+  s.nice = (count = 10) => {
+    const lo = Math.min(d[0], d[1]);
+    const hi = Math.max(d[0], d[1]);
+    const [n0, n1] = niceDomain(lo, hi, count);
+    d = d[0] <= d[1] ? [n0, n1] : [n1, n0];
+    update();
+    return s;
+  };
+  return s;
+}
+
+/** A linear scale, as d3's scaleLinear for what the plots use. */
+export function scaleLinear(): NumberScale {
+  return scale(() => identity);
+}
+
+/** The symlog scale T(v) = sign(v)·log1p(|v|/c), as d3's scaleSymlog; `constant` sets c. */
+export function scaleSymlog(): NumberScale & { constant(c: number): NumberScale } {
+  let c = 1;
+  const t: Transform = {
+    forward: (v) => Math.sign(v) * Math.log1p(Math.abs(v / c)),
+    inverse: (u) => Math.sign(u) * Math.expm1(Math.abs(u)) * c,
+  };
+  const s = scale(() => t) as NumberScale & { constant(c: number): NumberScale };
+  s.constant = (value: number) => {
+    c = value;
+    return s.domain(s.domain());
+  };
+  return s;
+}
