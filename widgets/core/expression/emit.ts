@@ -15,13 +15,20 @@ export class Emitter {
   readonly temps: string[] = [];
   private readonly byCode = new Map<string, string>();
 
-  /** @param symbol maps a symbol name to the JS expression that reads it */
+  /**
+   * @param symbol maps a symbol name to the JS expression that reads it
+   * @param hoisted names a subexpression computed elsewhere (the fused
+   *   stepper's terms that depend on time alone), or undefined to emit it here
+   */
   constructor(
     private readonly symbol: (name: string) => string,
     private readonly prefix = '$v',
+    private readonly hoisted: (node: MathNode) => string | undefined = () => undefined,
   ) {}
 
   emit(node: MathNode): string {
+    const name = this.hoisted(node);
+    if (name !== undefined) return name;
     switch (node.type) {
       case 'ConstantNode':
         return literal((node as unknown as { value: unknown }).value);

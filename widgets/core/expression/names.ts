@@ -1,3 +1,5 @@
+import { InputError } from '../errors.ts';
+
 /**
  * Naming of the state and of parameters. A state is `[q…, p…]`; by default the
  * coordinates are `q0 … q(n−1)` and the momenta `p0 … p(n−1)`, or plain `q`
@@ -30,16 +32,16 @@ export interface StateNames {
 }
 
 export function stateNames(dof: number, coordinates?: readonly string[], momenta?: readonly string[]): StateNames {
-  if (!Number.isInteger(dof) || dof < 1) throw new Error(`dof must be a positive integer, not ${dof}`);
+  if (!Number.isInteger(dof) || dof < 1) throw new InputError(`dof must be a positive integer, not ${dof}`);
   const q = coordinates ?? (dof === 1 ? ['q'] : range(dof).map((i) => `q${i}`));
   const p = momenta ?? (dof === 1 ? ['p'] : range(dof).map((i) => `p${i}`));
-  if (q.length !== dof) throw new Error(`${q.length} coordinate names given for ${dof} degrees of freedom`);
-  if (p.length !== dof) throw new Error(`${p.length} momentum names given for ${dof} degrees of freedom`);
+  if (q.length !== dof) throw new InputError(`${q.length} coordinate names given for ${dof} degrees of freedom`);
+  if (p.length !== dof) throw new InputError(`${p.length} momentum names given for ${dof} degrees of freedom`);
   const names = [...q, ...p];
   names.forEach(checkName);
   const seen = new Set<string>();
   for (const n of names) {
-    if (seen.has(n)) throw new Error(`the name ${n} is used twice`);
+    if (seen.has(n)) throw new InputError(`the name ${n} is used twice`);
     seen.add(n);
   }
   const aliases = new Map<string, string>();
@@ -52,8 +54,8 @@ export function stateNames(dof: number, coordinates?: readonly string[], momenta
 
 /** Throws unless `name` can be a coordinate or parameter name in generated code. */
 export function checkName(name: string): void {
-  if (!/^[A-Za-z_][A-Za-z0-9_]*$/.test(name)) throw new Error(`"${name}" is not a valid name`);
-  if (RESERVED.has(name) || name in CONSTANTS) throw new Error(`"${name}" is reserved and cannot name a variable`);
+  if (!/^[A-Za-z_][A-Za-z0-9_]*$/.test(name)) throw new InputError(`"${name}" is not a valid name`);
+  if (RESERVED.has(name) || name in CONSTANTS) throw new InputError(`"${name}" is reserved and cannot name a variable`);
 }
 
 export function range(n: number): number[] {
