@@ -73,7 +73,29 @@ export function watchPage(page) {
   return { problems, requests };
 }
 
-/** Waits until every cell on the page has shown its first value or error. */
-export async function cellsReady(page) {
+/** Waits until the cells near the first view (and what they read) have shown their first value or error. */
+export async function firstViewReady(page) {
   await page.waitForSelector('body[data-cells-ready]', { state: 'attached', timeout: 15_000 });
+}
+
+/**
+ * Reads the whole chapter the way a reader does: scrolls down through it a
+ * viewport at a time, so that every cell starts (cells start as they come
+ * near the view, widgets/cells/schedule.ts), waits until every cell has
+ * shown its first value or error, and scrolls back to the top.
+ */
+export async function cellsReady(page) {
+  await firstViewReady(page);
+  const complete = () => page.evaluate(() => document.body.hasAttribute('data-cells-complete'));
+  for (let i = 0; i < 200 && !(await complete()); i++) {
+    const atBottom = await page.evaluate(() => {
+      window.scrollBy(0, window.innerHeight * 0.8);
+      return window.scrollY + window.innerHeight >= document.documentElement.scrollHeight - 2;
+    });
+    // One frame for the IntersectionObserver to see what came into view.
+    await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+    if (atBottom) break;
+  }
+  await page.waitForSelector('body[data-cells-complete]', { state: 'attached', timeout: 30_000 });
+  await page.evaluate(() => window.scrollTo(0, 0));
 }

@@ -2,10 +2,10 @@
  * Shared set-up for the e2e test files: the built site on a local server and
  * a fresh headless Chromium, plus helpers that drive cells like a reader.
  */
-import { launchBrowser, watchPage, cellsReady } from './browser.mjs';
+import { launchBrowser, watchPage, cellsReady, firstViewReady } from './browser.mjs';
 import { startServer } from './server.mjs';
 
-export { cellsReady, watchPage };
+export { cellsReady, firstViewReady, watchPage };
 
 /** @param {import('playwright-core').BrowserContextOptions} [options] */
 export async function openSite(options) {
@@ -27,7 +27,8 @@ export async function openSite(options) {
 }
 
 /**
- * Opens a chapter with no saved edits and waits for its cells.
+ * Opens a chapter with no saved edits and reads it through, so that every
+ * cell has run (see cellsReady).
  * @param {{ origin: string, context: import('playwright-core').BrowserContext }} site
  * @param {string} path e.g. '/introduction/'
  */

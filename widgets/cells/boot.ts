@@ -7,7 +7,7 @@
  * notebook as they are wanted (schedule.ts): the cells near the view and
  * what they read at once, the rest as the reader scrolls. `data-cells-ready`
  * on <body> says that every cell wanted at first has shown its first value
- * or error. Editors load when the reader first touches a
+ * or error, `data-cells-complete` that every cell of the page has. Editors load when the reader first touches a
  * cell (lazy.ts). The build's compiled models and typeset equations come
  * from the page's data element (book/page-data.ts).
  */
@@ -25,6 +25,10 @@ function markReady(): void {
   document.dispatchEvent(new CustomEvent('phasebook:cells-ready'));
 }
 
+function markComplete(): void {
+  document.body.dataset.cellsComplete = '';
+}
+
 function boot(): void {
   const root = document.querySelector<HTMLElement>('[data-chapter]');
   if (!root) return;
@@ -34,7 +38,7 @@ function boot(): void {
     document.dispatchEvent(new CustomEvent('phasebook:compiling'));
   });
   const notebook = new Notebook(createBuiltins(root, createLibrary(page)));
-  const scheduler = new CellScheduler(markReady);
+  const scheduler = new CellScheduler(markReady, markComplete);
   const cells: LiveCell[] = [];
   for (const element of root.querySelectorAll<HTMLElement>('[data-cell]')) {
     try {

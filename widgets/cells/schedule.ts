@@ -8,7 +8,8 @@
  * screen shifts when it does.
  *
  * `ready` is called once every cell wanted at first has shown its first
- * value or error.
+ * value or error, and `complete` once every cell of the page has (which
+ * needs the reader, or a printout, to have reached them all).
  */
 import type { LiveCell } from './cell.ts';
 
@@ -18,19 +19,24 @@ export const START_MARGIN = '50% 0px 50% 0px';
 export class CellScheduler {
   readonly #byName = new Map<string, LiveCell>();
   readonly #waitingFirst = new Set<LiveCell>();
+  /** Every cell of the page that has not shown a first result yet. */
+  readonly #unfinished = new Set<LiveCell>();
   readonly #ready: () => void;
+  readonly #complete: () => void;
   #settled = false;
   /** True once the cells near the view at load have been found (and started). */
   #initialRound = false;
   #observer: IntersectionObserver | null = null;
 
-  constructor(ready: () => void) {
+  constructor(ready: () => void, complete: () => void = () => {}) {
     this.#ready = ready;
+    this.#complete = complete;
   }
 
   /** Adds the page's cells; call {@link watch} once all are added. */
   add(cell: LiveCell): void {
     if (cell.name && !this.#byName.has(cell.name)) this.#byName.set(cell.name, cell);
+    this.#unfinished.add(cell);
   }
 
   /**
@@ -61,7 +67,10 @@ export class CellScheduler {
       { rootMargin: START_MARGIN },
     );
     for (const cell of cells) this.#observer.observe(cell.root);
-    if (cells.length === 0) this.#initialRoundDone();
+    if (cells.length === 0) {
+      this.#initialRoundDone();
+      this.#complete();
+    }
   }
 
   /** Starts `cell` (if it has not started); the cells it reads follow through {@link wantInputs}. */
@@ -82,6 +91,7 @@ export class CellScheduler {
 
   /** A cell showed its first value or error. */
   firstResult(cell: LiveCell): void {
+    if (this.#unfinished.delete(cell) && this.#unfinished.size === 0) this.#complete();
     if (!this.#waitingFirst.delete(cell) || this.#settled) return;
     this.#checkSettled();
   }
