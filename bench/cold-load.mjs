@@ -28,16 +28,29 @@ export const HEAVY = [
 ];
 
 /**
- * Runs in the page before any of its scripts: times the first widget that
- * becomes ready (any kind, and the first simulator) and sums layout shifts.
+ * Runs in the page before any of its scripts: times the first live widget
+ * that becomes ready (one the page's scripts made, not a formula the build
+ * typeset into the HTML, which is "ready" as soon as it is parsed) and the
+ * first simulator, and sums layout shifts.
  */
 function instrument() {
   const marks = { widget: null, simulator: null, cls: 0, shifts: [] };
   Object.defineProperty(window, '__coldLoad', { value: marks });
+  /** The widgets in the built HTML, known once it is parsed. */
+  let built = null;
   const check = () => {
-    if (marks.widget === null && document.querySelector('[data-widget][data-ready]')) marks.widget = performance.now();
-    if (marks.simulator === null && document.querySelector('[data-widget="simulator"][data-ready]')) marks.simulator = performance.now();
+    if (!built) return;
+    for (const widget of document.querySelectorAll('[data-widget][data-ready]')) {
+      if (built.has(widget)) continue;
+      marks.widget ??= performance.now();
+      if (widget.dataset.widget === 'simulator') marks.simulator ??= performance.now();
+    }
   };
+  document.addEventListener('readystatechange', () => {
+    if (built) return;
+    built = new Set(document.querySelectorAll('[data-widget]'));
+    check();
+  });
   new MutationObserver(check).observe(document, { subtree: true, childList: true, attributes: true, attributeFilter: ['data-ready'] });
   try {
     new PerformanceObserver((list) => {
@@ -59,8 +72,10 @@ function instrument() {
 /**
  * Loads `path` once in a fresh page and measures it. `throttled` applies the
  * Slow 4G network and the 4× CPU slowdown through the DevTools protocol.
+ * With `waitFor: 'simulator'` (for a link to a simulator's cell) the load
+ * lasts until that simulator has drawn.
  */
-export async function coldLoad(context, origin, path, { throttled = false, settleMs = 1500, timeoutMs = 30_000 } = {}) {
+export async function coldLoad(context, origin, path, { throttled = false, settleMs = 1500, timeoutMs = 30_000, waitFor = 'widget' } = {}) {
   const page = await context.newPage();
   const session = await context.newCDPSession(page);
   if (throttled) {
@@ -78,11 +93,14 @@ export async function coldLoad(context, origin, path, { throttled = false, settl
     scripts.set(url, response.body().then((body) => gzipSync(body, { level: 9 }).length, () => 0));
   });
   await page.goto(origin + path, { waitUntil: 'load', timeout: timeoutMs });
-  const hasWidgets = await page.evaluate(() => document.querySelector('[data-cell]') !== null);
-  if (hasWidgets) {
-    await page
-      .waitForFunction(() => window.__coldLoad.widget !== null, null, { timeout: timeoutMs })
-      .catch(() => {});
+  const hasCells = await page.evaluate(() => document.querySelector('[data-cell]') !== null);
+  if (hasCells) {
+    // The cells near the view have run (a first view may hold no widget at all) …
+    await page.waitForSelector('body[data-cells-ready]', { state: 'attached', timeout: timeoutMs }).catch(() => {});
+    // … and, when a simulator is what the reader came for, it has drawn.
+    if (waitFor === 'simulator') {
+      await page.waitForFunction(() => window.__coldLoad.simulator !== null, null, { timeout: timeoutMs }).catch(() => {});
+    }
   }
   await page.waitForLoadState('networkidle', { timeout: timeoutMs }).catch(() => {});
   await page.waitForTimeout(settleMs);

@@ -3,9 +3,13 @@
  * 127.0.0.1 on a free port, real MIME types, `/<slug>/` → `<slug>/index.html`,
  * and a redirect from `/<slug>` to `/<slug>/` as static hosts do.
  * Nothing is cached, so every test sees exactly the requests a page makes.
+ * Text is sent gzip-compressed when the browser accepts it, as GitHub Pages
+ * and other static hosts send it, so that load times measured through it
+ * (bench/cold-load.mjs) are what a reader of the published book meets.
  */
 import { createServer } from 'node:http';
 import { createReadStream } from 'node:fs';
+import { createGzip } from 'node:zlib';
 import { stat } from 'node:fs/promises';
 import { extname, join, normalize, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -30,6 +34,9 @@ const MIME_TYPES = {
   '.txt': 'text/plain; charset=utf-8',
   '.xml': 'application/xml; charset=utf-8',
 };
+
+/** The types static hosts compress. */
+const COMPRESSIBLE = /^(text\/|application\/(json|xml)|image\/svg)/;
 
 async function fileAt(path) {
   try {
@@ -78,12 +85,16 @@ export async function startServer(root = DIST) {
       else response.end('Not found');
       return;
     }
+    const type = MIME_TYPES[extname(path)] ?? 'application/octet-stream';
+    const gzip = COMPRESSIBLE.test(type) && /\bgzip\b/.test(String(request.headers['accept-encoding'] ?? ''));
     response.writeHead(200, {
-      'Content-Type': MIME_TYPES[extname(path)] ?? 'application/octet-stream',
-      'Content-Length': info.size,
+      'Content-Type': type,
       'Cache-Control': 'no-store',
+      Vary: 'Accept-Encoding',
+      ...(gzip ? { 'Content-Encoding': 'gzip' } : { 'Content-Length': info.size }),
     });
     if (request.method === 'HEAD') response.end();
+    else if (gzip) createReadStream(path).pipe(createGzip({ level: 9 })).pipe(response);
     else createReadStream(path).pipe(response);
   });
   await new Promise((ready) => server.listen(0, '127.0.0.1', ready));

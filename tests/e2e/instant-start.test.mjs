@@ -1,0 +1,228 @@
+/**
+ * Instant start: what the build did ahead (compiled models, typeset
+ * equations; book/page-data.ts) lets every chapter run without its heavy
+ * modules, and nothing depends on it being there.
+ *
+ * - Reading a chapter through, however long, requests none of mathjs,
+ *   KaTeX's JavaScript, the cell parser or the editor.
+ * - With the build's data missing, or from another version, every chapter
+ *   still runs and its theory checks still agree: the page compiles and
+ *   typesets for itself, and it must be seen doing so (mathjs is fetched).
+ * - A reader's new H in any chapter is compiled on the page and the
+ *   simulator follows its physics: checked against the closed form of the
+ *   new motion.
+ */
+import assert from 'node:assert/strict';
+import { after, before, describe, test } from 'node:test';
+import { HEAVY } from '../../bench/cold-load.mjs';
+import { assertAgrees, THEORY_CHECK, widgetsReady } from './chapter-checks.mjs';
+import { cell, cellsReady, openSite, typeIntoCell, watchPage } from './fixture.mjs';
+
+/** Every page whose cells define models or show formulas. */
+const CHAPTERS = [
+  '/introduction/',
+  '/parametric-resonance/',
+  '/nonlinear-oscillator/',
+  '/kepler/',
+  '/adiabatic-invariants/',
+  '/scattering/',
+  '/special-relativity/',
+  '/playground/',
+  '/for-teachers/',
+];
+
+const PAGE_DATA = /<template data-phasebook-page-data="[^"]*"><\/template>/g;
+
+/** @type {Awaited<ReturnType<typeof openSite>>} */
+let site;
+before(async () => (site = await openSite()));
+after(() => site?.close());
+
+const heavyIn = (requests) => HEAVY.filter(([, pattern]) => requests.some((url) => pattern.test(url))).map(([name]) => name);
+
+/**
+ * Opens `path` with no saved edits; `rewrite` may change the page's HTML on
+ * its way in (to take the build's data out). Reads the chapter through.
+ */
+async function open(path, rewrite) {
+  const page = await site.context.newPage();
+  await page.goto(`${site.origin}/`);
+  await page.evaluate(() => localStorage.clear());
+  if (rewrite) {
+    await page.route(`${site.origin}${path}`, async (route) => {
+      const response = await route.fetch();
+      const body = rewrite(await response.text());
+      await route.fulfill({ response, body });
+    });
+  }
+  const watch = watchPage(page);
+  await page.goto(`${site.origin}${path}`);
+  await cellsReady(page);
+  await widgetsReady(page);
+  return { page, ...watch };
+}
+
+/** Every theory check on the page agrees, and no cell shows an error. */
+async function assertChapterHealthy(page) {
+  const errors = await page.locator('[data-cell-error]:visible').allTextContents();
+  assert.deepEqual(errors, []);
+  const checks = await page.$$eval(THEORY_CHECK, (all) =>
+    all.map((w) => ({ ...w.dataset, measured: Number(w.dataset.measured), predicted: Number(w.dataset.predicted), tolerance: Number(w.dataset.tolerance) })),
+  );
+  for (const check of checks) assertAgrees(check);
+  return checks.length;
+}
+
+describe('reading a chapter loads no heavy module', () => {
+  for (const path of CHAPTERS) {
+    test(path, async () => {
+      const { page, problems, requests } = await open(path);
+      // The reader stays a while: idle time fetches nothing heavy either.
+      await page.waitForTimeout(1500);
+      assert.deepEqual(heavyIn(requests), []);
+      await assertChapterHealthy(page);
+      assert.deepEqual(problems, []);
+      await page.close();
+    });
+  }
+});
+
+describe('without the build’s data, a chapter compiles and typesets for itself and still agrees', () => {
+  for (const path of CHAPTERS) {
+    test(`${path}: data missing`, async (t) => {
+      const { page, problems, requests } = await open(path, (html) => {
+        assert.ok(html.includes('<template data-phasebook-page-data'), 'the built page carries its data');
+        return html.replace(PAGE_DATA, '');
+      });
+      assert.ok(heavyIn(requests).includes('mathjs'), 'the page compiled its models itself');
+      const checks = await assertChapterHealthy(page);
+      t.diagnostic(`${checks} theory check(s) agree`);
+      assert.deepEqual(problems, []);
+      await page.close();
+    });
+  }
+
+  test('/introduction/: data of another version is not used', async () => {
+    const { page, problems, requests } = await open('/introduction/', (html) =>
+      // The format a future build might write: the page must not trust it.
+      html.replace(PAGE_DATA, (element) => element.replace(/(&quot;|&#34;)format\1:1\b/g, '$1format$1:999')),
+    );
+    assert.ok(heavyIn(requests).includes('mathjs'));
+    assert.ok((await assertChapterHealthy(page)) > 0);
+    assert.deepEqual(problems, []);
+    await page.close();
+  });
+});
+
+/**
+ * A new H for each chapter and the closed form of the motion it gives, from
+ * the chapter's own initial state and parameters. `hamiltonian` is H as the
+ * model carries it: the expression in the cell's string, or (`js`) the
+ * function's source.
+ * `truth(t)` is the state [q…, p…] at time t of one trajectory; for a batch,
+ * `truth(t, m)` that of trajectory m.
+ */
+const EDITS = [
+  {
+    path: '/introduction/', cell: 'H', hamiltonian: 'p^2/2 + omega^2*q^2/2',
+    // ω = 10 from (2, 0): q = 2 cos 10t, p = −20 sin 10t.
+    truth: (t) => [2 * Math.cos(10 * t), -20 * Math.sin(10 * t)],
+  },
+  {
+    path: '/parametric-resonance/', cell: 'H', hamiltonian: 'p^2/2 + omega^2*q^2/2 - f*q',
+    // f = 0 in this chapter, so again q = 2 cos 10t.
+    truth: (t) => [2 * Math.cos(10 * t), -20 * Math.sin(10 * t)],
+  },
+  {
+    path: '/nonlinear-oscillator/', cell: 'H', hamiltonian: 'p^2/2 + omega0^2*q^2/2',
+    // The anharmonic terms dropped: ω0 = 10 from (b, 0) = (1, 0).
+    truth: (t) => [Math.cos(10 * t), -10 * Math.sin(10 * t)],
+  },
+  {
+    path: '/kepler/', cell: 'H', hamiltonian: '(t, [x1, y1, x2, y2, px1, py1, px2, py2]) => px1**2 + py1**2 + px2**2 + py2**2 + 0*k',
+    js: true,
+    // Gravity switched off: q̇ = ∂H/∂p = 2p, straight lines from (−3, −3), (3, 3) with p = (2, −3), (−2, 3).
+    truth: (t) => [-3 + 4 * t, -3 - 6 * t, 3 - 4 * t, 3 + 6 * t, 2, -3, -2, 3],
+  },
+  {
+    path: '/adiabatic-invariants/', cell: 'H', hamiltonian: 'p^2/2 + omega0^2 * q^2/2 + 0*epsilon',
+    // No ramp: ω = ω0 = 4 from (1, 0).
+    truth: (t) => [Math.cos(4 * t), -4 * Math.sin(4 * t)],
+  },
+  {
+    path: '/scattering/', cell: 'H', hamiltonian: 'p0^2 + p1^2 + 0*alpha',
+    // No field: every particle of the beam flies straight at q̇0 = 2p0 = 8 from x0 = −20.
+    truth: (t, m) => [-20 + 8 * t, (m - 15) * 0.3, 4, 0],
+    batch: true,
+  },
+  {
+    path: '/special-relativity/', cell: 'H', hamiltonian: 'p^2/2/m - F*q',
+    // Newton's particle (written unlike the chapter's own, whose model the build compiled) under F = 0.8 from (−10, −10): p = −10 + Ft, q = −10 + (−10t + Ft²/2)/m, m = √10.
+    truth: (t) => [-10 + (-10 * t + 0.4 * t * t) / Math.sqrt(10), -10 + 0.8 * t],
+  },
+  {
+    path: '/playground/', cell: 'H', hamiltonian: 'p^2/2 + omega^2*q^2/2',
+    truth: (t) => [2 * Math.cos(10 * t), -20 * Math.sin(10 * t)],
+  },
+  {
+    path: '/for-teachers/', cell: 'pendulumH', hamiltonian: 'p^2/2 + omega0^2 * q^2/2',
+    // The small-angle pendulum exactly: ω0 = 2 from (0.5, 0).
+    truth: (t) => [0.5 * Math.cos(2 * t), -Math.sin(2 * t)],
+  },
+];
+
+/**
+ * In the page: the text of the first equations widget after cell `id` (null
+ * when there is none) or, given `before`, whether it now shows other typeset text.
+ */
+function equationsAfter([id, before]) {
+  const h = document.querySelector(`[data-cell="${id}"]`);
+  const shown = [...document.querySelectorAll('[data-widget="equations"]')].find(
+    (w) => h && h.compareDocumentPosition(w) & Node.DOCUMENT_POSITION_FOLLOWING,
+  );
+  if (before === null) return shown?.textContent ?? null;
+  return !!shown && shown.textContent !== before && shown.querySelector('.katex') !== null;
+}
+
+describe('a new H in any chapter is compiled on the page, and the simulator follows its physics', () => {
+  for (const edit of EDITS) {
+    test(edit.path, async () => {
+      const { page, problems, requests } = await open(edit.path);
+      const equationsBefore = await page.evaluate(equationsAfter, [edit.cell, null]);
+      assert.deepEqual(heavyIn(requests), []);
+
+      await typeIntoCell(page, edit.cell, `${edit.cell} = ${edit.js ? edit.hamiltonian : `"${edit.hamiltonian}"`}`);
+      // The first simulator built from the new H (it carries H's source), once it has drawn.
+      const handle = await page.waitForFunction(
+        (hamiltonian) =>
+          [...document.querySelectorAll('[data-widget="simulator"][data-ready]')].find((el) => el.simulator?.model?.source === hamiltonian),
+        edit.hamiltonian,
+        { timeout: 30_000 },
+      );
+      // Let it run a little, then stop it and read where it is.
+      await page.waitForTimeout(600);
+      const { t, state, dim } = await handle.evaluate((el) => {
+        el.simulator.pause();
+        const sim = el.simulator.simulation;
+        return { t: sim.t, state: Array.from(sim.state), dim: el.simulator.model.dim };
+      });
+      assert.ok(t > 0, `the simulator ran (t = ${t})`);
+      const count = state.length / dim;
+      if (edit.batch) assert.ok(count > 1);
+      for (let m = 0; m < count; m++) {
+        const expected = edit.truth(t, m);
+        const got = state.slice(m * dim, (m + 1) * dim);
+        // RK 3/8 at dt = 5e-4 is exact for these linear motions up to rounding, and within 1e-9 for the oscillators.
+        got.forEach((value, i) => assert.ok(Math.abs(value - expected[i]) < 1e-6, `trajectory ${m}, component ${i} at t = ${t}: ${value} vs ${expected[i]}`));
+      }
+      assert.ok(heavyIn(requests).includes('mathjs'), 'the new H was compiled on the page');
+      if (equationsBefore !== null) {
+        // The chapter shows the new H's equations, typeset on the page with KaTeX.
+        await page.waitForFunction(equationsAfter, [edit.cell, equationsBefore], { timeout: 15_000 });
+        assert.ok(heavyIn(requests).includes('KaTeX'));
+      }
+      assert.deepEqual(problems, []);
+      await page.close();
+    });
+  }
+});
