@@ -25,6 +25,26 @@ function lazyChunk(id) {
 }
 
 /**
+ * KaTeX declares its fonts `font-display: block`: when one arrives after the
+ * first layout, every line holding inline math reflows, which on a slow
+ * connection was most of a chapter's layout shift. `optional` (as for the
+ * text fonts, src/lib/fonts.ts) keeps the first layout: a math font that is
+ * late is used from the next page on. The main two are preloaded.
+ * @returns {import('vite').Plugin}
+ */
+function katexFontDisplay() {
+  return {
+    name: 'phasebook:katex-font-display',
+    transform(code, id) {
+      if (!/[\\/]katex[\\/]dist[\\/]katex(\.min)?\.css$/.test(id)) return null;
+      const changed = code.replaceAll('font-display:block', 'font-display:optional');
+      if (changed === code) this.error('katex.min.css no longer says font-display:block; check how it declares its fonts');
+      return { code: changed, map: null };
+    },
+  };
+}
+
+/**
  * PHASEBOOK_OUT_DIR lets several builds run side by side (each with its own
  * output and caches) without wiping each other's dist/.
  */
@@ -58,6 +78,7 @@ export default defineConfig({
     ...(outDir ? { cacheDir: `${outDir}/.vite-cache` } : {}),
     // Workers (the stability chart's) load mathjs lazily, so they need ES modules to split chunks.
     worker: { format: 'es' },
+    plugins: [katexFontDisplay()],
     build: {
       rollupOptions: { output: { manualChunks: lazyChunk } },
     },

@@ -10,7 +10,9 @@
  * - typeset every formula they show — `equations(model)` and `tex(…)` —
  *   with KaTeX, so the page needs no KaTeX's JavaScript, and put the HTML
  *   of a cell whose value is a formula into the cell's output, so it is
- *   there at the first paint (and without JavaScript).
+ *   there at the first paint (and without JavaScript);
+ * - reserve the box of every simulator a cell shows (simulator/reserve.ts),
+ *   so that the widget appears without moving the text around it.
  *
  * Only the catalogue entries that lead to such work do anything here; the
  * others (widgets, simulations, analyses) fail with a note, and the cells
@@ -33,6 +35,7 @@ import { standardValues } from '../../widgets/cells/globals.ts';
 import { runHeadless, type HeadlessCell } from '../../widgets/cells/headless.ts';
 import { createLibrary } from '../../widgets/library.ts';
 import { modelSpec, type ModelOptions } from '../../widgets/simulator/options.ts';
+import { reserveHtml, simulatorPlan, type ReserveOptions } from '../../widgets/simulator/reserve.ts';
 
 const PRERENDERED = Symbol('phasebook.prerendered');
 
@@ -104,9 +107,10 @@ export async function precompileChapter(cells: readonly HeadlessCell[]): Promise
   }
   Object.assign(catalogue, {
     canonicalEquations: (spec: HamiltonianSpec) => canonicalEquations(spec, build),
-    simulator: async (options: ModelOptions & { model?: Model }) => {
-      if (!options.model) await compile(modelSpec(options));
-      throw new NotAtBuildTime('simulator runs in the page');
+    // The simulator runs in the page; here it leaves the box it will fill (simulator/reserve.ts).
+    simulator: async (options: ModelOptions & ReserveOptions & { model?: Model }) => {
+      const model = options.model ?? (await canonicalEquations(modelSpec(options), build));
+      return prerendered(reserveHtml(simulatorPlan(options, model)), []);
     },
     stabilityChart: async (options: { hamiltonian: string; params: Record<string, number> }) => {
       await compile({ dof: 1, hamiltonian: options.hamiltonian, params: options.params });

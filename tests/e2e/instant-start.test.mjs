@@ -226,3 +226,37 @@ describe('a new H in any chapter is compiled on the page, and the simulator foll
     });
   }
 });
+
+describe('every simulator appears in the box the build reserved for it, at desk and phone widths', () => {
+  for (const width of [1100, 390]) {
+    test(`${width} px`, async (t) => {
+      const page = await site.context.newPage();
+      await page.setViewportSize({ width, height: 900 });
+      let compared = 0;
+      for (const path of CHAPTERS) {
+        await page.goto(`${site.origin}${path}`);
+        // Boxes of cells that have not started yet (below the first view) are still the build's.
+        const reserved = await page.evaluate(() =>
+          [...document.querySelectorAll('[data-reserve="simulator"]')].map((box) => ({
+            id: box.closest('[data-cell]').id,
+            height: box.closest('[data-cell-output]').getBoundingClientRect().height,
+          })),
+        );
+        await cellsReady(page);
+        await widgetsReady(page);
+        for (const { id, height } of reserved) {
+          const real = await page.evaluate((id) => {
+            const output = document.getElementById(id).querySelector('[data-cell-output]');
+            return output.querySelector('[data-widget="simulator"]') ? output.getBoundingClientRect().height : null;
+          }, id);
+          if (real === null) continue;
+          compared++;
+          assert.ok(Math.abs(real - height) <= 1.5, `${path} ${id}: reserved ${height} px, the simulator takes ${real} px`);
+        }
+      }
+      t.diagnostic(`${compared} simulators compared`);
+      assert.ok(compared >= 10);
+      await page.close();
+    });
+  }
+});

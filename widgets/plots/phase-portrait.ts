@@ -4,6 +4,7 @@ import type { AxisKind } from './extent.ts';
 import { axisTitle, phasePairs, toExtent, tracksOf, type ExtentOption, type Pair } from './plane-columns.ts';
 import type { PanelSpec } from './plane-panels.ts';
 import { PlaneView, type PlaneStyle } from './plane-view.ts';
+import { heightAt, PHASE_MULTIPLE, PHASE_PANEL } from './sizes.ts';
 
 export interface PhasePortraitOptions extends PlaneStyle {
   /** degrees of freedom i to plot as (q_i, p_i), or explicit pairs of series; default all */
@@ -44,7 +45,7 @@ export function phasePortrait(options: PhasePortraitOptions = {}): View {
     trail: options.trail ?? 'full',
     kind: 'phase-portrait',
     label: 'Phase portrait: momentum against coordinate',
-    panelHeight: (width) => Math.max(multiples ? 180 : 220, Math.min(460, Math.round(width * (multiples ? 0.8 : 0.62)))),
+    panelHeight: (width) => heightAt(multiples ? PHASE_MULTIPLE : PHASE_PANEL, width),
     resolve: (simulation) => {
       const pairs = phasePairs(simulation.model.names, simulation.model.dof, options.pairs);
       if (pairs.length === 0) throw new Error('no pairs to draw');

@@ -1,6 +1,7 @@
 import { makeMapping, type Mapping } from './axis-scale.ts';
 import { MARGIN, type Rect } from './draw-axes.ts';
 import { contains, emptyExtent, fitEqualAspect, growExtent, includePoint, isEmpty, stretchGrowth, transform, union, type AxisKind, type Extent } from './extent.ts';
+import { gridColumns } from './sizes.ts';
 import { makePens, type Pens } from './trace.ts';
 
 /** One line on a plane plot: the record columns of its x and y, and its colour group. */
@@ -86,11 +87,6 @@ export function makePanel(spec: PanelSpec): Panel {
     my: identity,
     fresh: emptyExtent(),
   };
-}
-
-/** Grid columns for `count` panels in a column `width` px wide: two side by side when there is room. */
-export function gridColumns(count: number, width: number): number {
-  return count > 1 && width >= 520 ? 2 : 1;
 }
 
 /** The plotting rectangle of panel i of `count` in a width × height canvas. */

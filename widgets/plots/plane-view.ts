@@ -5,7 +5,8 @@ import { drawAxes, drawLegend } from './draw-axes.ts';
 import { defaultLook, drawDots, fadeLayer, rescaleImage, strokeRows, type LineStyle } from './plane-draw.ts';
 import { includeRows, liftPens } from './trace.ts';
 import { ageBuckets, Fader, FADE_FRAMES, parseTrail, type TrailOption } from './trail.ts';
-import { gridColumns, growPanel, makePanel, panelRect, placePanel, settlePanel, type Panel, type PanelSpec } from './plane-panels.ts';
+import { growPanel, makePanel, panelRect, placePanel, settlePanel, type Panel, type PanelSpec } from './plane-panels.ts';
+import { gridColumns } from './sizes.ts';
 import { ViewFrame, type Layer } from './view-frame.ts';
 import { seriesColor } from './view-theme.ts';
 

@@ -13,8 +13,8 @@ export class SpectrumReadout {
 
   constructor() {
     this.element = document.createElement('div');
+    // Spacing and the reserved height are in widgets.css.
     this.element.className = 'pb-spectrum-readout';
-    this.element.style.cssText = 'margin-top:0.3rem;font-variant-numeric:tabular-nums;';
     this.list = document.createElement('ol');
     this.list.className = 'pb-spectrum-peaks';
     this.list.style.cssText = 'margin:0;padding-left:1.6em;';

@@ -11,6 +11,7 @@ import { chooseRows, gatherSamples, MIN_SAMPLES, rowsInSpan, type RowChoice, typ
 import { chooseMaxFrequency, largestShown, steadyLimit } from './spectrum-scale.ts';
 import { checkSpectrumOptions } from './spectrum-options.ts';
 import { SpectrumReadout } from './spectrum-readout.ts';
+import { heightAt, SPECTRUM_PLOT } from './sizes.ts';
 import { ViewFrame } from './view-frame.ts';
 
 export interface SpectrumViewOptions {
@@ -84,7 +85,7 @@ class SpectrumViewImpl implements SpectrumView {
     this.frame = new ViewFrame({
       kind: 'spectrum',
       label: 'Frequency spectrum',
-      height: (w) => (typeof height === 'number' ? height : height ? height(w) : Math.max(200, Math.min(340, Math.round(w * 0.46)))),
+      height: (w) => (typeof height === 'number' ? height : height ? height(w) : heightAt(SPECTRUM_PLOT, w)),
     });
     this.window = options.window ?? 'hamming';
     this.show = options.show ?? 'magnitude';

@@ -1,6 +1,5 @@
 import type { Simulation } from '../core/simulation.ts';
 import type { View } from '../simulator/view.ts';
-import { MARGIN } from './axes.ts';
 import { pixelRatio } from './canvas.ts';
 import { resolveTheme, watchTheme, type Theme } from './colors.ts';
 import { clampEnd } from './history.ts';
@@ -8,6 +7,7 @@ import { Legend } from './legend.ts';
 import { planSeries, type SeriesPlan } from './series.ts';
 import { el, WINDOWS } from './time-plot-parts.ts';
 import type { TimeRenderer, UpdateResult } from './time-renderer.ts';
+import { timePlotHeight } from './sizes.ts';
 import { listenScroll, ScrubBar } from './time-scroll.ts';
 import { TimeStage } from './time-stage.ts';
 import type { YScaleKind } from './y-map.ts';
@@ -67,7 +67,7 @@ export class TimePlot implements View {
     const window = options.window ?? 10;
     if (!(window > 0) || !Number.isFinite(window)) throw new Error(`timePlot: window must be a positive number of time units, not ${window}`);
     const label = options.label ?? 'Time plot';
-    this.stage = new TimeStage((options.height ?? 220) + MARGIN.top + MARGIN.bottom, window, kind, label);
+    this.stage = new TimeStage(timePlotHeight(options.height), window, kind, label);
     if (options.domain) {
       const [lo, hi] = options.domain;
       if (!(lo < hi)) throw new Error(`timePlot: domain must be [low, high] with low < high, not [${lo}, ${hi}]`);

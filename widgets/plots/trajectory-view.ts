@@ -3,6 +3,7 @@ import type { View } from '../simulator/view.ts';
 import { axisTitle, defaultBodies, toExtent, tracksOf, type ExtentOption, type Pair } from './plane-columns.ts';
 import type { PanelSpec } from './plane-panels.ts';
 import { PlaneView, type PlaneStyle } from './plane-view.ts';
+import { heightAt, TRAJECTORY_PANEL } from './sizes.ts';
 
 export interface TrajectoryOptions extends PlaneStyle {
   /**
@@ -38,7 +39,7 @@ export function trajectoryView(options: TrajectoryOptions = {}): View {
     trail: options.trail ?? 'fade',
     kind: 'trajectory',
     label: 'Trajectory in configuration space',
-    panelHeight: (width) => Math.max(220, Math.min(560, Math.round(width * 0.7))),
+    panelHeight: (width) => heightAt(TRAJECTORY_PANEL, width),
     resolve: (simulation) => [trajectoryPanel(simulation, options, extent, limit)],
   });
 }

@@ -2,7 +2,8 @@ import { describe, expect, it } from 'vitest';
 import { toPixel } from '../../../widgets/plots/axis-scale.ts';
 import { MARGIN } from '../../../widgets/plots/draw-axes.ts';
 import { contains } from '../../../widgets/plots/extent.ts';
-import { gridColumns, growPanel, makePanel, panelRect, placePanel, settlePanel, type PanelSpec } from '../../../widgets/plots/plane-panels.ts';
+import { growPanel, makePanel, panelRect, placePanel, settlePanel, type PanelSpec } from '../../../widgets/plots/plane-panels.ts';
+import { gridColumns } from '../../../widgets/plots/sizes.ts';
 
 function spec(overrides: Partial<PanelSpec> = {}): PanelSpec {
   return {
