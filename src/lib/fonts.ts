@@ -1,19 +1,26 @@
 /**
- * The book's text fonts, declared here rather than through fontsource's
- * stylesheets so that loading them never moves the page.
+ * The book's fonts — its text faces and KaTeX's — declared here rather than
+ * by fontsource's and KaTeX's stylesheets, so that loading them never moves
+ * the page and never delays a widget.
  *
  * - `font-display: optional`: a font that is not there by the first layout
- *   (about 100 ms) is not swapped in later for this page view, so text never
- *   reflows under the reader; it is cached for the next page. fontsource's
- *   `swap` moved every line of a chapter when the serif arrived.
- * - The latin subsets of the serif and of the sans (and on chapters, of the
- *   code font, with KaTeX's two most used faces) are preloaded, so that on any reasonable connection they
- *   are there in time. The other subsets load only when a page uses one of
- *   their characters (unicode-range), as before.
+ *   (about 100 ms) is not swapped in later for this page view, so text and
+ *   math never reflow under the reader; it is cached for the next page.
+ *   fontsource's `swap` and KaTeX's `block` moved every line of a chapter
+ *   when a font arrived.
+ * - The faces of the first view are preloaded: the latin subsets of the
+ *   serif and the sans, and on chapters those of the code font and KaTeX's
+ *   two most used faces. The rest load when a page uses them
+ *   (unicode-range, KaTeX's own classes).
+ * - On a slow connection (the browser's estimate is 3G or slower, or the
+ *   reader asked to save data) no font is declared at all: the page reads in
+ *   the system's fonts, and the bandwidth goes to the text and the widgets,
+ *   where a font that would arrive too late to be used would have taken it.
+ *   This is decided by a few lines in the head, before the first paint
+ *   (fontLoader); without JavaScript the fonts are declared in <noscript>.
  *
- * KaTeX's own stylesheet declares its faces with `font-display: block`; its
- * layout is fixed by the build's typesetting, so a late math font changes
- * glyph shapes within their boxes rather than the lines around them.
+ * KaTeX's @font-face rules are taken out of its stylesheet by the build
+ * (astro.config.mjs) and declared here instead, with the same families.
  */
 import serifLatin from '@fontsource-variable/source-serif-4/files/source-serif-4-latin-wght-normal.woff2?url';
 import serifLatinExt from '@fontsource-variable/source-serif-4/files/source-serif-4-latin-ext-wght-normal.woff2?url';
@@ -27,8 +34,6 @@ import sansGreek from '@fontsource-variable/inter/files/inter-greek-wght-normal.
 import monoLatin from '@fontsource/jetbrains-mono/files/jetbrains-mono-latin-400-normal.woff2?url';
 import monoLatinExt from '@fontsource/jetbrains-mono/files/jetbrains-mono-latin-ext-400-normal.woff2?url';
 import monoGreek from '@fontsource/jetbrains-mono/files/jetbrains-mono-greek-400-normal.woff2?url';
-import katexMain from 'katex/dist/fonts/KaTeX_Main-Regular.woff2?url';
-import katexMath from 'katex/dist/fonts/KaTeX_Math-Italic.woff2?url';
 
 /** The Unicode ranges of fontsource's subsets (Google Fonts' slicing). */
 const LATIN =
@@ -42,16 +47,16 @@ interface Face {
   style: 'normal' | 'italic';
   weight: string;
   url: string;
-  range: string;
+  range?: string;
   /** variable fonts are `woff2-variations` */
-  variable: boolean;
+  variable?: boolean;
 }
 
 const SERIF = 'Source Serif 4 Variable';
 const SANS = 'Inter Variable';
 const MONO = 'JetBrains Mono';
 
-const FACES: readonly Face[] = [
+const TEXT_FACES: readonly Face[] = [
   { family: SERIF, style: 'normal', weight: '200 900', url: serifLatin, range: LATIN, variable: true },
   { family: SERIF, style: 'normal', weight: '200 900', url: serifLatinExt, range: LATIN_EXT, variable: true },
   { family: SERIF, style: 'normal', weight: '200 900', url: serifGreek, range: GREEK, variable: true },
@@ -61,20 +66,55 @@ const FACES: readonly Face[] = [
   { family: SANS, style: 'normal', weight: '100 900', url: sansLatin, range: LATIN, variable: true },
   { family: SANS, style: 'normal', weight: '100 900', url: sansLatinExt, range: LATIN_EXT, variable: true },
   { family: SANS, style: 'normal', weight: '100 900', url: sansGreek, range: GREEK, variable: true },
-  { family: MONO, style: 'normal', weight: '400', url: monoLatin, range: LATIN, variable: false },
-  { family: MONO, style: 'normal', weight: '400', url: monoLatinExt, range: LATIN_EXT, variable: false },
-  { family: MONO, style: 'normal', weight: '400', url: monoGreek, range: GREEK, variable: false },
+  { family: MONO, style: 'normal', weight: '400', url: monoLatin, range: LATIN },
+  { family: MONO, style: 'normal', weight: '400', url: monoLatinExt, range: LATIN_EXT },
+  { family: MONO, style: 'normal', weight: '400', url: monoGreek, range: GREEK },
 ];
 
-/** The @font-face rules, for an inline <style> in the page's head. */
-export const fontFaceCss = FACES.map(
-  (f) =>
-    `@font-face{font-family:'${f.family}';font-style:${f.style};font-weight:${f.weight};font-display:optional;` +
-    `src:url(${f.url}) format('${f.variable ? 'woff2-variations' : 'woff2'}');unicode-range:${f.range}}`,
-).join('\n');
+/** KaTeX's woff2 files by path; each name says its face, e.g. KaTeX_Main-BoldItalic.woff2. */
+const KATEX_FILES = import.meta.glob<string>('../../node_modules/katex/dist/fonts/*.woff2', { query: '?url', import: 'default', eager: true });
 
-/** Fonts every page's first view uses: the body text and the headings. */
-export const textFonts: readonly string[] = [serifLatin, sansLatin];
+/** KaTeX's faces as its stylesheet declares them: the family before the dash, bold 700, italic. */
+export function katexFace(path: string, url: string): Face {
+  const match = /(KaTeX_\w+)-(Regular|Bold|Italic|BoldItalic)\.woff2$/.exec(path);
+  if (!match) throw new Error(`not a KaTeX font file: ${path}`);
+  const [, family, variant] = match;
+  return { family, style: variant.endsWith('Italic') ? 'italic' : 'normal', weight: variant.startsWith('Bold') ? '700' : '400', url };
+}
 
-/** What a chapter's first view adds: its math and its code cells. */
-export const chapterFonts: readonly string[] = [katexMain, katexMath, monoLatin];
+const KATEX_FACES = Object.entries(KATEX_FILES).map(([path, url]) => katexFace(path, url));
+if (KATEX_FACES.length < 20) throw new Error(`found ${KATEX_FACES.length} KaTeX fonts, expected 20: has katex moved its fonts?`);
+const katexUrl = (name: string) => KATEX_FACES.find((f) => f.url.includes(`/${name}.`))?.url ?? '';
+
+function faceRule(f: Face): string {
+  return `@font-face{font-family:'${f.family}';font-style:${f.style};font-weight:${f.weight};font-display:optional;` +
+    `src:url(${f.url}) format('${f.variable ? 'woff2-variations' : 'woff2'}')${f.range ? `;unicode-range:${f.range}` : ''}}`;
+}
+
+/** Every @font-face rule of the book. */
+export const fontFaceCss = [...TEXT_FACES, ...KATEX_FACES].map(faceRule).join('\n');
+
+/** Fonts the first view of every page uses: the body text and the headings. */
+const TEXT_PRELOADS = [serifLatin, sansLatin];
+/** What a chapter's first view adds: its code and its math. */
+const CHAPTER_PRELOADS = [monoLatin, katexUrl('KaTeX_Main-Regular'), katexUrl('KaTeX_Math-Italic')];
+
+/**
+ * The inline script that declares the fonts and preloads the first view's,
+ * unless the connection is slow (see the module comment).
+ */
+export function fontLoader(chapter: boolean): string {
+  const preloads = chapter ? [...TEXT_PRELOADS, ...CHAPTER_PRELOADS] : TEXT_PRELOADS;
+  return `(() => {
+  const c = navigator.connection;
+  if (c && (c.saveData || /^(slow-2g|2g|3g)$/.test(c.effectiveType))) return;
+  for (const href of ${JSON.stringify(preloads)}) {
+    const link = document.createElement('link');
+    Object.assign(link, { rel: 'preload', as: 'font', type: 'font/woff2', href, crossOrigin: 'anonymous' });
+    document.head.append(link);
+  }
+  const style = document.createElement('style');
+  style.textContent = ${JSON.stringify(fontFaceCss)};
+  document.head.append(style);
+})();`;
+}

@@ -13,10 +13,14 @@
  *   new motion.
  */
 import assert from 'node:assert/strict';
+import { readdirSync, readFileSync } from 'node:fs';
+import { join } from 'node:path';
 import { after, before, describe, test } from 'node:test';
+import { gzipSync } from 'node:zlib';
 import { HEAVY } from '../../bench/cold-load.mjs';
 import { assertAgrees, THEORY_CHECK, widgetsReady } from './chapter-checks.mjs';
 import { cell, cellsReady, openSite, typeIntoCell, watchPage } from './fixture.mjs';
+import { DIST } from './server.mjs';
 
 /** Every page whose cells define models or show formulas. */
 const CHAPTERS = [
@@ -85,6 +89,23 @@ describe('reading a chapter loads no heavy module', () => {
       await page.close();
     });
   }
+});
+
+test('the stability chart’s worker carries no mathjs: it builds its model from the compiled data it is sent', () => {
+  const assets = join(DIST, '_astro');
+  const workers = readdirSync(assets).filter((name) => /^stability-worker.*\.js$/.test(name));
+  assert.equal(workers.length, 1);
+  const code = readFileSync(join(assets, workers[0]), 'utf8');
+  // Strings of mathjs's own code (its typed-function dispatch and its parser), checked to be in the mathjs chunk.
+  const markers = ['Unexpected type of argument', 'Undefined symbol'];
+  const mathjs = readdirSync(assets).filter((name) => /^mathjs.*\.js$/.test(name)).map((name) => readFileSync(join(assets, name), 'utf8')).join('');
+  for (const marker of markers) {
+    assert.ok(mathjs.includes(marker), `mathjs's chunk has "${marker}"`);
+    assert.ok(!code.includes(marker), `the worker has "${marker}"`);
+  }
+  // Nor does it import a chunk that holds mathjs.
+  for (const [, imported] of code.matchAll(/from\s*["']\.\/([^"']+)["']/g)) assert.doesNotMatch(imported, /mathjs/);
+  assert.ok(gzipSync(code).length < 10_000, `the worker is ${gzipSync(code).length} B gzip`);
 });
 
 describe('without the build’s data, a chapter compiles and typesets for itself and still agrees', () => {

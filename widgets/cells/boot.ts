@@ -12,7 +12,7 @@
  * from the page's data element (book/page-data.ts).
  */
 import { PAGE_DATA_ATTRIBUTE, pageContext } from '../book/page-data.ts';
-import { createLibrary } from '../library.ts';
+import { createLibrary, prefetchWidgets } from '../library.ts';
 import { createBuiltins } from './builtins.ts';
 import { LiveCell } from './cell.ts';
 import { Notebook } from './runtime.ts';
@@ -38,7 +38,7 @@ function boot(): void {
     document.dispatchEvent(new CustomEvent('phasebook:compiling'));
   });
   const notebook = new Notebook(createBuiltins(root, createLibrary(page)));
-  const scheduler = new CellScheduler(markReady, markComplete);
+  const scheduler = new CellScheduler(markReady, markComplete, (cell) => prefetchWidgets(cell.root));
   const cells: LiveCell[] = [];
   for (const element of root.querySelectorAll<HTMLElement>('[data-cell]')) {
     try {

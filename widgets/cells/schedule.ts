@@ -28,9 +28,13 @@ export class CellScheduler {
   #initialRound = false;
   #observer: IntersectionObserver | null = null;
 
-  constructor(ready: () => void, complete: () => void = () => {}) {
+  readonly #starting: (cell: LiveCell) => void;
+
+  /** `starting` hears of each cell just before it starts, to fetch what it will need. */
+  constructor(ready: () => void, complete: () => void = () => {}, starting: (cell: LiveCell) => void = () => {}) {
     this.#ready = ready;
     this.#complete = complete;
+    this.#starting = starting;
   }
 
   /** Adds the page's cells; call {@link watch} once all are added. */
@@ -51,6 +55,10 @@ export class CellScheduler {
     }
     let first = true;
     const byRoot = new Map(cells.map((cell) => [cell.root, cell]));
+    // A link to a cell (`/kepler/#cell-stars`) says what the reader came for: start it now, not after the first layout.
+    const target = linkedElement()?.closest<HTMLElement>('[data-cell]');
+    const linked = target ? byRoot.get(target) : undefined;
+    if (linked) this.want(linked);
     this.#observer = new IntersectionObserver(
       (entries) => {
         for (const entry of entries) {
@@ -78,6 +86,7 @@ export class CellScheduler {
     if (cell.started) return;
     this.#observer?.unobserve(cell.root);
     if (!this.#settled) this.#waitingFirst.add(cell);
+    this.#starting(cell);
     void cell.start();
   }
 
@@ -105,5 +114,15 @@ export class CellScheduler {
     if (this.#settled || !this.#initialRound || this.#waitingFirst.size > 0) return;
     this.#settled = true;
     this.#ready();
+  }
+}
+
+/** The element the page's URL fragment names, if any. */
+function linkedElement(): Element | null {
+  if (location.hash.length < 2) return null;
+  try {
+    return document.getElementById(decodeURIComponent(location.hash.slice(1)));
+  } catch {
+    return null; // a malformed escape in the fragment
   }
 }

@@ -1,3 +1,8 @@
+/** Lines of the readout under a spectrum listing up to `peaks` peaks (shared with simulator/reserve.ts). */
+export function readoutLines(peaks: number): number {
+  return peaks + 2;
+}
+
 /**
  * The text under a spectrum: a numbered list of peaks (numbered as on the
  * plot), the comparison with the theoretical value, and what the spectrum
@@ -11,10 +16,20 @@ export class SpectrumReadout {
   private readonly note: HTMLParagraphElement;
   private readonly basis: HTMLParagraphElement;
 
-  constructor() {
+  /**
+   * @param peaks the most peaks it lists: with the comparison and the line
+   *   on what the spectrum was computed from, the lines it is tall enough for
+   *   (readoutLines). Its height is fixed, so that peaks coming and going
+   *   never move the page; text that wraps on a narrow screen scrolls.
+   */
+  constructor(peaks: number) {
     this.element = document.createElement('div');
-    // Spacing and the reserved height are in widgets.css.
     this.element.className = 'pb-spectrum-readout';
+    this.element.style.setProperty('--pb-readout-lines', String(readoutLines(peaks)));
+    // Scrollable, so it must be reachable by keyboard.
+    this.element.tabIndex = 0;
+    this.element.setAttribute('role', 'region');
+    this.element.setAttribute('aria-label', 'Spectrum peaks');
     this.list = document.createElement('ol');
     this.list.className = 'pb-spectrum-peaks';
     this.list.style.cssText = 'margin:0;padding-left:1.6em;';

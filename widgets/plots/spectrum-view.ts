@@ -59,7 +59,7 @@ export function spectrumView(options: SpectrumViewOptions = {}): SpectrumView {
 
 class SpectrumViewImpl implements SpectrumView {
   private readonly frame: ViewFrame;
-  private readonly readout = new SpectrumReadout();
+  private readonly readout: SpectrumReadout;
   private readonly seriesSelect: SelectControl;
   private simulation: Simulation | null = null;
   private columns: readonly string[] = [];
@@ -82,6 +82,7 @@ class SpectrumViewImpl implements SpectrumView {
 
   constructor(private readonly options: SpectrumViewOptions) {
     const { height } = options;
+    this.readout = new SpectrumReadout(options.peaks ?? 3);
     this.frame = new ViewFrame({
       kind: 'spectrum',
       label: 'Frequency spectrum',

@@ -14,6 +14,7 @@
 import { phasePairs } from '../plots/plane-columns.ts';
 import { heightCss, PHASE_MULTIPLE, PHASE_PANEL, SPECTRUM_PLOT, timePlotHeight, TRAJECTORY_PANEL, type Proportional } from '../plots/sizes.ts';
 import type { Model } from '../core/types.ts';
+import { readoutLines } from '../plots/spectrum-readout.ts';
 import { viewNames, type ViewName } from './options.ts';
 
 /** What a view's options say about its height: fixed pixels, or a function (which CSS cannot follow). */
@@ -27,7 +28,7 @@ export interface SimulatorPlan {
 export type ReservedView =
   | { readonly kind: 'time'; readonly area: number | undefined }
   | { readonly kind: 'trajectory' | 'phase'; readonly panel: Proportional; readonly panels: number; readonly height: HeightOption }
-  | { readonly kind: 'spectrum'; readonly height: HeightOption; readonly controls: boolean };
+  | { readonly kind: 'spectrum'; readonly height: HeightOption; readonly controls: boolean; readonly peaks: number };
 
 /** The options of simulator() that shape it. */
 export interface ReserveOptions {
@@ -35,7 +36,7 @@ export interface ReserveOptions {
   timePlot?: { height?: number };
   trajectory?: { height?: HeightOption };
   phase?: { height?: HeightOption; layout?: 'overlay' | 'multiples'; pairs?: readonly (number | readonly [string, string])[] };
-  spectrum?: { height?: HeightOption; controls?: boolean };
+  spectrum?: { height?: HeightOption; controls?: boolean; peaks?: number };
 }
 
 /** The plan of a simulator with these options and this model; throws, like simulator(), on options it would reject. */
@@ -55,7 +56,7 @@ function reservedView(name: ViewName, options: ReserveOptions, model: Pick<Model
       return { kind: 'phase', panel: multiples ? PHASE_MULTIPLE : PHASE_PANEL, panels, height: options.phase?.height };
     }
     case 'spectrum':
-      return { kind: 'spectrum', height: options.spectrum?.height, controls: options.spectrum?.controls !== false };
+      return { kind: 'spectrum', height: options.spectrum?.height, controls: options.spectrum?.controls !== false, peaks: options.spectrum?.peaks ?? 3 };
   }
 }
 
@@ -88,13 +89,18 @@ function viewHtml(view: ReservedView): string {
     case 'spectrum':
       return `<div class="pb-plot pb-plot-spectrum">${view.controls ? '<div class="pb-plot-bar"></div>' : ''}`
         + `<div class="pb-reserve-stage" style="${stageStyle(SPECTRUM_PLOT, 1, view.height)}"></div>`
-        + `<div class="pb-spectrum-readout"></div></div>`;
+        + `<div class="pb-spectrum-readout" style="--pb-readout-lines: ${readoutLines(view.peaks)}"></div></div>`;
   }
 }
 
-/** The reserved box: the simulator's frame with its rows and plots, empty, and a word on what is coming. */
+/**
+ * The reserved box: the simulator's frame with its rows and plots, empty,
+ * and a word on what is coming. It names the views, so that the page can
+ * fetch their modules with the simulator's (library.ts, prefetchWidgets).
+ */
 export function reserveHtml(plan: SimulatorPlan): string {
-  return `<div class="pb-simulator pb-reserve" aria-hidden="true" data-reserve="simulator">`
+  const views = plan.views.map((v) => v.kind).join(' ');
+  return `<div class="pb-simulator pb-reserve" aria-hidden="true" data-reserve="simulator" data-reserve-views="${views}">`
     + `<div class="pb-bar"><span class="pb-reserve-label">Simulator: starting…</span></div>`
     + `<div class="pb-views">${plan.views.map(viewHtml).join('')}</div>`
     + `<div class="pb-data"></div></div>`;

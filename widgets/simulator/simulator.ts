@@ -10,6 +10,7 @@ import {
   BATCH_EVERY, checkOptionNames, defaultCapacity, derivedSeries, flattenInitial, modelSpec, oneLine, recordWidth, viewNames,
   type DerivedFunction, type ViewName,
 } from './options.ts';
+import { VIEW_MODULES } from './view-modules.ts';
 import type { View } from './view.ts';
 
 export type { SimulatorElement, SimulatorHandle } from './mount.ts';
@@ -54,10 +55,10 @@ export interface SimulatorOptions {
 
 /** Each view's module loads only when a simulator shows that view. */
 const FACTORIES: Record<ViewName, (o: SimulatorOptions) => Promise<View>> = {
-  time: (o) => import('../plots/time-plot.ts').then((m) => m.timePlot(o.timePlot)),
-  trajectory: (o) => import('../plots/trajectory-view.ts').then((m) => m.trajectoryView(o.trajectory)),
-  phase: (o) => import('../plots/phase-portrait.ts').then((m) => m.phasePortrait(o.phase)),
-  spectrum: (o) => import('../plots/spectrum-view.ts').then((m) => m.spectrumView(o.spectrum)),
+  time: (o) => VIEW_MODULES.time().then((m) => m.timePlot(o.timePlot)),
+  trajectory: (o) => VIEW_MODULES.trajectory().then((m) => m.trajectoryView(o.trajectory)),
+  phase: (o) => VIEW_MODULES.phase().then((m) => m.phasePortrait(o.phase)),
+  spectrum: (o) => VIEW_MODULES.spectrum().then((m) => m.spectrumView(o.spectrum)),
 };
 
 /**

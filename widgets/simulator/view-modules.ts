@@ -1,0 +1,14 @@
+/**
+ * Where each view of a simulator lives. A simulator loads the modules of
+ * the views it shows; the page may ask for them earlier, as soon as it knows
+ * a simulator is coming (library.ts, prefetchWidgets), so that they arrive
+ * together with the simulator's own module rather than after it.
+ */
+import type { ViewName } from './options.ts';
+
+export const VIEW_MODULES = {
+  time: () => import('../plots/time-plot.ts'),
+  trajectory: () => import('../plots/trajectory-view.ts'),
+  phase: () => import('../plots/phase-portrait.ts'),
+  spectrum: () => import('../plots/spectrum-view.ts'),
+} satisfies Record<ViewName, () => Promise<unknown>>;
