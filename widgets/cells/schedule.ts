@@ -56,9 +56,15 @@ export class CellScheduler {
     let first = true;
     const byRoot = new Map(cells.map((cell) => [cell.root, cell]));
     // A link to a cell (`/kepler/#cell-stars`) says what the reader came for: start it now, not after the first layout.
-    const target = linkedElement()?.closest<HTMLElement>('[data-cell]');
+    const element = linkedElement();
+    const target = element?.closest<HTMLElement>('[data-cell]');
     const linked = target ? byRoot.get(target) : undefined;
-    if (linked) this.want(linked);
+    if (linked) {
+      this.want(linked);
+      // Browsers scroll to the fragment only once the page has loaded (every widget module and font in): until
+      // then the reader would watch the top of the chapter, then a jump. Go there now, unless they have scrolled.
+      if (scrollY === 0) element?.scrollIntoView();
+    }
     this.#observer = new IntersectionObserver(
       (entries) => {
         for (const entry of entries) {
