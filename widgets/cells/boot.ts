@@ -12,9 +12,13 @@
  * from the page's data element (book/page-data.ts).
  */
 import { PAGE_DATA_ATTRIBUTE, pageContext } from '../book/page-data.ts';
+import { downloadText } from '../data/download.ts';
 import { createLibrary, prefetchWidgets } from '../library.ts';
 import { createBuiltins } from './builtins.ts';
+import { blockedMessage, cellOfSource, recentCell, stackOf } from './cell-errors.ts';
 import { LiveCell } from './cell.ts';
+import { MathSnapshot, pageIntact, showPageBroken } from './integrity.ts';
+import { formatError } from './spec.ts';
 import { Notebook } from './runtime.ts';
 import { CellScheduler } from './schedule.ts';
 import { EditStore } from './storage.ts';
@@ -29,15 +33,48 @@ function markComplete(): void {
   document.body.dataset.cellsComplete = '';
 }
 
+/** Every edit on the page as one JSON file, for a reader whose browser will not keep them. */
+function downloadEdits(cells: readonly LiveCell[]): void {
+  const edits = cells.flatMap((cell) => (cell.edit ? [{ cell: cell.id, ...cell.edit }] : []));
+  const file = { page: location.href, saved: new Date().toISOString(), edits };
+  const name = `phasebook-edits-${location.pathname.split('/').filter(Boolean).pop() ?? 'page'}.json`;
+  downloadText([JSON.stringify(file, null, 2)], 'application/json', name);
+}
+
+/**
+ * Errors no cell's promise carries — a cell's timer or handler throwing, a
+ * promise it let fail, a request the Content-Security-Policy blocked — show
+ * under the cell whose code it was, not only in the console.
+ */
+function reportLaterErrors(cells: readonly LiveCell[]): void {
+  const byId = new Map(cells.map((cell) => [cell.id, cell]));
+  const show = (source: string | null | undefined, message: string, guess = false): boolean => {
+    const cell = byId.get(cellOfSource(source) ?? (guess ? recentCell() : null) ?? '');
+    cell?.showLaterError(message);
+    return cell !== undefined;
+  };
+  addEventListener('error', (event) => {
+    if (show(stackOf(event.error), `${formatError(event.error ?? event.message)} (after the cell ran)`)) event.preventDefault();
+  });
+  addEventListener('unhandledrejection', (event) => {
+    if (show(stackOf(event.reason), `${formatError(event.reason)} (a promise of this cell failed)`)) event.preventDefault();
+  });
+  document.addEventListener('securitypolicyviolation', (event) => {
+    show(event.sourceFile, blockedMessage(event.blockedURI, event.effectiveDirective), true);
+  });
+}
+
 function boot(): void {
   const root = document.querySelector<HTMLElement>('[data-chapter]');
   if (!root) return;
-  const store = new EditStore(root.dataset.chapter ?? '');
+  // Keyed by the page's path, base path included: two books on one origin keep their edits apart.
+  const store = new EditStore(location.pathname);
   const data = [...document.querySelectorAll(`template[${PAGE_DATA_ATTRIBUTE}]`)].map((t) => t.getAttribute(PAGE_DATA_ATTRIBUTE));
   const page = pageContext(data, () => {
     document.dispatchEvent(new CustomEvent('phasebook:compiling'));
   });
   const notebook = new Notebook(createBuiltins(root, createLibrary(page)));
+  const math = new MathSnapshot();
   const scheduler = new CellScheduler(markReady, markComplete, (cell) => prefetchWidgets(cell.root));
   const cells: LiveCell[] = [];
   for (const element of root.querySelectorAll<HTMLElement>('[data-cell]')) {
@@ -45,6 +82,9 @@ function boot(): void {
       const cell: LiveCell = new LiveCell(new CellView(element), notebook, store, {
         onFirstResult: () => scheduler.firstResult(cell),
         onDefine: (spec) => scheduler.wantInputs(spec.inputs),
+        downloadEdits: () => downloadEdits(cells),
+        checkPage: () => ({ restored: math.restore(), intact: pageIntact(root) }),
+        pageBroken: showPageBroken,
       });
       cells.push(cell);
       scheduler.add(cell);
@@ -55,6 +95,18 @@ function boot(): void {
   }
   // A page being printed shows every cell's output.
   addEventListener('beforeprint', () => cells.forEach((cell) => scheduler.want(cell)));
+  // Keystrokes typed just before the reader leaves are saved, not lost with the pending timer.
+  addEventListener('pagehide', () => cells.forEach((cell) => cell.leaving()));
+  document.addEventListener('visibilitychange', () => {
+    if (document.visibilityState === 'hidden') cells.forEach((cell) => cell.flush());
+  });
+  reportLaterErrors(cells);
+  // Another tab of this book saved an edit: the cell showing it hears of it.
+  const byKey = new Map(cells.map((cell) => [store.editKey(cell.id), cell]));
+  addEventListener('storage', (event) => {
+    const cell = event.key ? byKey.get(event.key) : undefined;
+    if (cell && event.storageArea === localStorage) cell.externalChange(store.parseEvent(event.newValue));
+  });
   scheduler.watch(cells);
 }
 

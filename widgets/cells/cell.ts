@@ -4,13 +4,16 @@
  *
  * Promises to the reader:
  * - the page never throws their text away: a syntax error keeps the old
- *   definition running and the text in the editor, and drafts are saved as
- *   they type;
- * - an edit made from an older version of the chapter's cell is offered,
- *   never applied silently.
+ *   definition running and the text in the editor, drafts are saved as they
+ *   type and when the page is left, and a save that fails says so;
+ * - only code the reader ran runs again on the next load; a draft is shown,
+ *   never run;
+ * - an edit made from an older version of the chapter's cell, one that was
+ *   still running when the page last died, or one another tab saved since,
+ *   is offered, never applied silently.
  */
 import { compileCell } from './compile.ts';
-import { DraftKeeper } from './drafts.ts';
+import { DraftKeeper, type SaveProblem } from './drafts.ts';
 import type { CellEditor } from './editor.ts';
 import { loadEditor, loadParser } from './lazy.ts';
 import type { CellVariable, Notebook } from './runtime.ts';
@@ -30,7 +33,21 @@ export interface CellHooks {
   onFirstResult(): void;
   /** The cell is about to be defined by `spec`: the cells it reads must run too. */
   onDefine(spec: CellSpec): void;
+  /** Offers the reader a download of every edit on the page (storage cannot keep them). */
+  downloadEdits(): void;
+  /**
+   * After a cell's result: puts back any part of Math a cell replaced (naming
+   * it) and says whether the chapter is still on the page (integrity.ts).
+   */
+  checkPage(): { restored: readonly string[]; intact: boolean };
+  /** The chapter is gone from the page because of this cell's code. */
+  pageBroken(label: string): void;
 }
+
+/** After the reader's code has shown a result, the page must stay responsive this long to count as having survived it. */
+const SURVIVAL_MS = 1000;
+/** …or this long without a result (a cell may wait on a promise for ever without freezing anything). */
+const SURVIVAL_WITHOUT_RESULT_MS = 10_000;
 
 export class LiveCell {
   readonly #view: CellView;
@@ -40,8 +57,12 @@ export class LiveCell {
   readonly #hooks: CellHooks;
   #hasResult = false;
   #started = false;
+  /** Clears the "running" mark once the page has survived the reader's code (see #runReaderCode). */
+  #survival: { result: boolean; timer: ReturnType<typeof setTimeout> } | null = null;
   /** The text the reader sees, whether or not it runs. */
   #draft: string;
+  /** The text whose definition runs (the original until the reader runs something else). */
+  #running: string;
   #editor: CellEditor | null = null;
   #editorLoading: Promise<void> | null = null;
   /** Keys typed into the static code while the editor loads, replayed into it once mounted. */
@@ -50,9 +71,10 @@ export class LiveCell {
   constructor(view: CellView, notebook: Notebook, store: EditStore, hooks: CellHooks) {
     this.#view = view;
     this.#notebook = notebook;
-    this.#drafts = new DraftKeeper(store, view.id, view.originalSource, view.hash);
+    this.#drafts = new DraftKeeper(store, view.id, view.originalSource, view.hash, (problem) => this.#saveProblem(problem));
     this.#hooks = hooks;
     this.#draft = view.originalSource;
+    this.#running = view.originalSource;
     view.setState('waiting');
     this.#variable = notebook.add({
       pending: () => view.setState('pending'),
@@ -61,16 +83,30 @@ export class LiveCell {
         view.setError('runtime', null);
         view.showValue(value, name);
         this.#firstResult();
+        this.#resulted();
       },
       rejected: (error, name) => {
         view.setState('rejected');
         view.clearOutput();
         view.setError('runtime', notebook.describeFailure(error, name));
         this.#firstResult();
+        this.#resulted();
       },
     });
     this.#listen();
     document.addEventListener('phasebook:compiling', () => view.showCompiling());
+  }
+
+  /** The cell's id on the page (its name, or `cell-N`). */
+  get id(): string {
+    return this.#view.id;
+  }
+
+  /** The reader's text and the code that runs, when either is not the chapter's original. */
+  get edit(): { draft: string; running: string } | null {
+    const original = this.#view.originalSource;
+    const draft = this.#editor?.source ?? this.#draft;
+    return draft === original && this.#running === original ? null : { draft, running: this.#running };
   }
 
   /** The cell's name as the chapter wrote it, for finding the cells that read it. */
@@ -87,16 +123,18 @@ export class LiveCell {
     return this.#started;
   }
 
-  /** Defines the cell: with the reader's saved edit if it matches this chapter, else the original. */
+  /** Defines the cell: with the code the reader last ran, if the page may run it (drafts.ts), else the original. */
   async start(): Promise<void> {
     if (this.#started) return;
     this.#started = true;
     const starting = this.#drafts.starting();
-    if (starting.kind === 'apply') {
-      this.#showDraft(starting.source);
-      if (await this.#apply(starting.source)) return;
+    if (starting.kind === 'run') {
+      this.#showDraft(starting.draft);
+      if (await this.#apply(starting.ran)) return;
+    } else if (starting.kind === 'draft') {
+      this.#showDraft(starting.draft);
     } else if (starting.kind === 'offer') {
-      this.#offer(starting.edit);
+      this.#offer(starting.edit, starting.why);
     }
     this.#defineOriginal();
   }
@@ -107,22 +145,54 @@ export class LiveCell {
     const source = this.#editor?.source ?? this.#draft;
     this.#draft = source;
     this.#view.setBusy(true);
+    let took: boolean;
     try {
-      await this.#apply(source);
+      took = await this.#apply(source);
     } finally {
       this.#view.setBusy(false);
     }
     // Running changed text while an old edit is on offer means the reader moved on.
     if (this.#drafts.offering && source !== this.#view.originalSource) this.#closeOffer();
-    this.#drafts.commit(source);
+    // Text that does not parse did not run: it is kept as a draft, and what ran before stays what runs.
+    if (took) this.#drafts.ran(source);
+    else this.#drafts.changed(source);
   }
 
   /** Back to the chapter's original. Undoable in the editor with Ctrl+Z. */
   reset(): void {
     this.#showDraft(this.#view.originalSource);
-    this.#drafts.commit(this.#view.originalSource);
+    this.#closeOffer();
+    this.#drafts.ran(this.#view.originalSource);
     this.#view.setError('compile', null);
     this.#defineOriginal();
+  }
+
+  /** Saves a draft that is waiting for its delayed save: the page is being hidden or left. */
+  flush(): void {
+    this.#drafts.flush();
+  }
+
+  /**
+   * The page is being left normally. A frozen page runs no handler, so a page
+   * that gets here survived whatever the reader's code was doing.
+   */
+  leaving(): void {
+    this.flush();
+    if (this.#survival) {
+      clearTimeout(this.#survival.timer);
+      this.#survived();
+    }
+  }
+
+  /** Code of this cell failed after the cell gave its value: shown until the cell runs again. */
+  showLaterError(message: string): void {
+    this.#view.setError('later', message);
+  }
+
+  /** Another tab saved (or removed) this cell's edit. */
+  externalChange(edit: SavedEdit | null): void {
+    if (!edit || edit.draft === this.#draft) return;
+    this.#offerTheirs(edit, 'This cell was changed in another tab.');
   }
 
   /** Swaps the static code for the editor; `clickAt` keeps the cursor where the reader clicked. */
@@ -189,7 +259,11 @@ export class LiveCell {
       const definition = compileCell(source, spec, this.#view.id);
       this.#view.setError('compile', null);
       this.#hooks.onDefine(spec);
+      if (source !== this.#view.originalSource) this.#watchSurvival();
+      this.#view.setError('later', null);
       this.#notebook.define(this.#variable, spec, definition);
+      this.#running = source;
+      this.#updateStatus();
       return true;
     } catch (error) {
       this.#view.setError('compile', formatError(error));
@@ -205,7 +279,10 @@ export class LiveCell {
       if (!spec) throw new SyntaxError(this.#view.buildError?.replace(/^SyntaxError: /, '') ?? 'this cell could not be parsed');
       const definition = compileCell(this.#view.originalSource, spec, this.#view.id);
       this.#hooks.onDefine(spec);
+      this.#view.setError('later', null);
       this.#notebook.define(this.#variable, spec, definition);
+      this.#running = this.#view.originalSource;
+      this.#updateStatus();
     } catch (error) {
       this.#view.setError('compile', formatError(error));
       this.#firstResult();
@@ -214,7 +291,7 @@ export class LiveCell {
 
   #changed(source: string): void {
     this.#draft = source;
-    this.#view.setEdited(source !== this.#view.originalSource);
+    this.#updateStatus();
     this.#drafts.changed(source);
   }
 
@@ -222,28 +299,112 @@ export class LiveCell {
     this.#draft = source;
     if (this.#editor && this.#editor.source !== source) this.#editor.replaceSource(source);
     else if (!this.#editor) this.#view.showStaticSource(source);
-    this.#view.setEdited(source !== this.#view.originalSource);
+    this.#updateStatus();
   }
 
-  #offer(edit: SavedEdit): void {
+  /** "edited" when the reader's code runs, "not run yet" when the text shown is not what runs. */
+  #updateStatus(): void {
+    const original = this.#view.originalSource;
+    this.#view.setEdited(this.#draft !== original || this.#running !== original, this.#draft !== this.#running);
+  }
+
+  #offer(edit: SavedEdit, why: 'changed' | 'stopped'): void {
     const when = new Date(edit.savedAt).toLocaleDateString();
+    const text = edit.ran ?? edit.draft;
+    if (why === 'stopped') {
+      this.#view.showNotice('Your edit of this cell did not finish the last time it ran: the page stopped. The original runs instead.', [
+        { label: 'Run my edit', run: () => this.#takeEdit(text, true) },
+        { label: 'Edit it', run: () => this.#takeEdit(text, false) },
+        { label: 'Discard', run: () => this.#discardOffer() },
+      ]);
+      return;
+    }
     this.#view.showNotice(`This cell changed since your edit of ${when}.`, [
+      { label: 'Restore my edit', run: () => this.#takeEdit(text, true) },
+      { label: 'Discard', run: () => this.#discardOffer() },
+    ]);
+  }
+
+  /** The reader takes an offered edit: into the editor, and run it or not. */
+  #takeEdit(source: string, run: boolean): void {
+    this.#closeOffer();
+    this.#showDraft(source);
+    if (run) void this.run();
+    else this.#drafts.changed(source);
+  }
+
+  #discardOffer(): void {
+    this.#closeOffer();
+    this.#drafts.ran(this.#view.originalSource);
+  }
+
+  #offerTheirs(theirs: SavedEdit, message: string): void {
+    this.#view.showNotice(message, [
       {
-        label: 'Restore my edit',
+        label: 'Use theirs',
         run: () => {
-          this.#closeOffer();
-          this.#showDraft(edit.source);
-          void this.run();
+          this.#view.clearNotice();
+          this.#drafts.adopt(theirs);
+          this.#showDraft(theirs.draft);
+          if (theirs.ran !== null) void this.#apply(theirs.ran);
+          else this.#defineOriginal();
         },
       },
       {
-        label: 'Discard',
+        label: 'Keep mine',
         run: () => {
-          this.#closeOffer();
-          this.#drafts.commit(this.#draft);
+          this.#view.clearNotice();
+          this.#drafts.keepMine(this.#editor?.source ?? this.#draft);
         },
       },
     ]);
+  }
+
+  #saveProblem(problem: SaveProblem): void {
+    if (problem.reason === 'conflict') {
+      this.#offerTheirs(problem.theirs, `This cell was changed in another tab since you loaded it (${new Date(problem.theirs.savedAt).toLocaleTimeString()}); your text is not saved yet.`);
+      return;
+    }
+    const why = problem.reason === 'full' ? 'the browser’s storage for this site is full' : 'the browser does not let this page keep data';
+    this.#view.showNotice(`Your edit cannot be kept: ${why}. It will be lost when you leave the page.`, [
+      { label: 'Download my edits', run: () => this.#hooks.downloadEdits() },
+    ]);
+  }
+
+  /**
+   * Marks the reader's code as running until the page has shown it survived:
+   * if the page freezes in it (or is closed while frozen), the next load runs
+   * the original and offers the edit instead of freezing again.
+   */
+  #watchSurvival(): void {
+    if (this.#survival) clearTimeout(this.#survival.timer);
+    this.#drafts.markRunning();
+    this.#survival = { result: false, timer: setTimeout(() => this.#survived(), SURVIVAL_WITHOUT_RESULT_MS) };
+  }
+
+  /** The cell showed a value or an error: if the page is still responsive a moment later, it survived. */
+  #resulted(): void {
+    const { restored, intact } = this.#hooks.checkPage();
+    if (restored.length) {
+      this.#view.setError('later', `RuntimeError: this cell changed ${restored.join(', ')}, which every cell and widget relies on; the change was undone.`);
+    }
+    if (!intact) {
+      // The mark stays: the next load offers this edit instead of running it, and the page says so now.
+      if (this.#survival) clearTimeout(this.#survival.timer);
+      this.#survival = null;
+      this.#drafts.markRunning();
+      this.#hooks.pageBroken(this.name ? `cell ${this.name}` : 'a cell');
+      return;
+    }
+    const survival = this.#survival;
+    if (!survival || survival.result) return;
+    clearTimeout(survival.timer);
+    this.#survival = { result: true, timer: setTimeout(() => this.#survived(), SURVIVAL_MS) };
+  }
+
+  #survived(): void {
+    this.#survival = null;
+    this.#drafts.survived();
   }
 
   #closeOffer(): void {

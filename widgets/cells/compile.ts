@@ -6,6 +6,8 @@
  * spec's body offsets come from that parse, so the body slice is a complete
  * expression or block: text like `x = 1); alert(1); (2` never gets here.
  */
+import { noteCellRun } from './cell-errors.ts';
+import { LoopGuard } from './loop-guard.ts';
 import type { CellSpec } from './spec.ts';
 
 /** A cell's definition: called by the runtime with the values of its inputs. */
@@ -24,21 +26,81 @@ function pickMaker(spec: CellSpec): FunctionMaker {
   return Function as unknown as FunctionMaker;
 }
 
-/** The function body: a block's inside, or `return` of the expression. */
+/** The name the loop guard has inside a cell's code. */
+const GUARD = '$pbLoop';
+
+/** The cell's text with every loop iteration starting by asking the guard whether to break. */
+function guardLoops(source: string, spec: CellSpec): string {
+  const inserts: [number, string][] = [];
+  for (const [start, end, block] of spec.loops ?? []) {
+    if (block) {
+      inserts.push([start + 1, `if (${GUARD}()) break;`]);
+    } else {
+      inserts.push([start, `{ if (${GUARD}()) break; `], [end, ' }']);
+    }
+  }
+  let text = source;
+  // From the end backwards, so earlier offsets stay valid.
+  for (const [at, insert] of inserts.sort((a, b) => b[0] - a[0])) text = text.slice(0, at) + insert + text.slice(at);
+  return text;
+}
+
+/** The function body: a block's inside, or `return` of the expression, loops guarded. */
 export function cellBody(source: string, spec: CellSpec): string {
   const [start, end] = spec.body;
   if (start === end) return '';
-  const body = source.slice(start, end);
+  const guarded = guardLoops(source, spec);
+  const body = guarded.slice(start, end + (guarded.length - source.length));
   // The newline before ")" keeps a trailing line comment from swallowing it.
   return spec.block ? body.slice(1, -1) : `return (\n${body}\n)`;
 }
 
+/** The page's loop guard (loop-guard.ts), shared by every cell. */
+export const pageLoopGuard = new LoopGuard();
+
+function isIterator(value: unknown): value is Iterator<unknown> & { [Symbol.iterator](): unknown } {
+  return typeof value === 'object' && value !== null && typeof (value as Iterator<unknown>).next === 'function';
+}
+
+/**
+ * The value a cell's code returned, made to fail with the guard's error when
+ * a loop was stopped while it was computed — a broken-off loop leaves a
+ * wrong value, which must never pass for the cell's result. A promise is
+ * checked when it settles, a generator after each step.
+ */
+function checked(value: unknown, guard: LoopGuard, before: number): unknown {
+  const fail = () => {
+    const stop = guard.stoppedSince(before);
+    if (stop) throw stop;
+  };
+  fail();
+  if (value instanceof Promise) return value.then((v) => (fail(), v));
+  if (isIterator(value)) {
+    const next = value.next.bind(value);
+    value.next = (...args: [] | [unknown]) => {
+      const count = guard.count;
+      const step = next(...args);
+      if (step instanceof Promise) return step.then((s) => (guard.stoppedSince(count) && fail(), s)) as never;
+      const stop = guard.stoppedSince(count);
+      if (stop) throw stop;
+      return step;
+    };
+  }
+  return value;
+}
+
 /**
  * Builds the definition. `label` names the cell in stack traces and in the
- * browser's debugger (via sourceURL).
+ * browser's debugger (via sourceURL), and in the loop guard's message.
  */
-export function compileCell(source: string, spec: CellSpec, label: string): CellDefinition {
+export function compileCell(source: string, spec: CellSpec, label: string, guard: LoopGuard = pageLoopGuard): CellDefinition {
   const Maker = pickMaker(spec);
   const sourceUrl = `\n//# sourceURL=cell:${encodeURIComponent(label)}`;
-  return new Maker(...spec.inputs, cellBody(source, spec) + sourceUrl);
+  const code = new Maker(...spec.inputs, GUARD, cellBody(source, spec) + sourceUrl) as (...args: unknown[]) => unknown;
+  const loop = guard.forCell(spec.name ? `cell ${spec.name}` : 'this cell');
+  return ((...inputs: unknown[]) => {
+    noteCellRun(label);
+    const before = guard.count;
+    return checked(code(...inputs, loop), guard, before);
+  }) as CellDefinition;
 }

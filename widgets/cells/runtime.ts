@@ -17,11 +17,42 @@ function undefinedName(name: string): never {
   throw new RuntimeError(`${name} is not defined`);
 }
 
+/** Why a superseded definition's promise was let go; the runtime ignores it, as it does any stale value. */
+class Superseded extends Error {
+  override name = 'Superseded';
+}
+
+/** Rejects with {@link Superseded} when `signal` aborts. */
+function whenAborted(signal: AbortSignal): Promise<never> {
+  return new Promise((_, reject) => signal.addEventListener('abort', () => reject(new Superseded('redefined')), { once: true }));
+}
+
+/**
+ * The definition, made to let go of its value when the cell is defined
+ * again. The runtime waits for a variable's previous value before computing
+ * its new definition, so a promise that never settles (`x = new Promise(() => {})`)
+ * would keep the cell pending for ever, fixes and Reset included.
+ */
+function supersedable(definition: CellDefinition, signal: AbortSignal): CellDefinition {
+  return ((...inputs: never[]) => {
+    const value = definition(...inputs);
+    if (value instanceof Promise) return Promise.race([value, whenAborted(signal)]);
+    if (typeof value === 'object' && value !== null && Symbol.asyncIterator in value) {
+      const iterator = value as unknown as AsyncIterator<unknown>;
+      const next = iterator.next.bind(iterator);
+      iterator.next = (...args: [] | [unknown]) => Promise.race([next(...args), whenAborted(signal)]);
+    }
+    return value;
+  }) as CellDefinition;
+}
+
 export class Notebook {
   readonly #runtime: Runtime;
   readonly #module: Module;
   /** Which variable currently defines each name, for telling cell inputs from unknown names. */
   readonly #definers = new Map<string, Variable>();
+  /** Aborts when a variable is defined again, releasing its old definition's pending value. */
+  readonly #current = new Map<Variable, AbortController>();
 
   constructor(builtins: Record<string, BuiltinDefinition>) {
     this.#runtime = new Runtime(builtins, undefinedName);
@@ -37,7 +68,10 @@ export class Notebook {
   define(variable: Variable, spec: CellSpec, definition: CellDefinition): void {
     for (const [name, definer] of this.#definers) if (definer === variable) this.#definers.delete(name);
     if (spec.name) this.#definers.set(spec.name, variable);
-    variable.define(spec.name, spec.inputs, definition);
+    this.#current.get(variable)?.abort();
+    const controller = new AbortController();
+    this.#current.set(variable, controller);
+    variable.define(spec.name, spec.inputs, supersedable(definition, controller.signal));
   }
 
   /** True when a cell (not a builtin, not an unknown name) defines `name`. */

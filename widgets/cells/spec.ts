@@ -17,12 +17,27 @@ export interface CellSpec {
   readonly body: readonly [number, number];
   /** True when the body is a `{ … }` block rather than an expression. */
   readonly block: boolean;
+  /**
+   * The bodies of the loops in the cell, as source offsets [start, end) and
+   * whether each is a `{ … }` block: compile.ts starts each iteration with
+   * the page's loop guard (loop-guard.ts). Absent in specs of older builds.
+   */
+  readonly loops?: readonly (readonly [number, number, boolean])[];
+}
+
+/** An ESTree node as the parser gives it: a type, offsets and child nodes among its fields. */
+interface SyntaxNode {
+  readonly type: string;
+  readonly start: number;
+  readonly end: number;
+  readonly body?: SyntaxNode;
+  readonly [field: string]: unknown;
 }
 
 /** The subset of an @observablehq/parser cell that {@link describeCell} reads. */
 export interface ParsedCell {
   id: { type: string; name?: string } | null;
-  body: { type: string; start: number; end: number } | null;
+  body: SyntaxNode | null;
   references: ReadonlyArray<{ type: string; name?: string }>;
   async: boolean;
   generator: boolean;
@@ -62,7 +77,28 @@ export function describeCell(cell: ParsedCell): CellSpec {
     generator: cell.generator,
     body: cell.body ? [cell.body.start, cell.body.end] : [0, 0],
     block: cell.body?.type === 'BlockStatement',
+    loops: cell.body ? loopBodies(cell.body) : [],
   };
+}
+
+const LOOPS = new Set(['ForStatement', 'ForInStatement', 'ForOfStatement', 'WhileStatement', 'DoWhileStatement']);
+
+function isNode(value: unknown): value is SyntaxNode {
+  return typeof value === 'object' && value !== null && typeof (value as SyntaxNode).type === 'string' && typeof (value as SyntaxNode).start === 'number';
+}
+
+/** Every loop's body in the tree, functions' loops included (a function defined in a cell loops in it). */
+function loopBodies(root: SyntaxNode): [number, number, boolean][] {
+  const found: [number, number, boolean][] = [];
+  const visit = (node: SyntaxNode): void => {
+    if (LOOPS.has(node.type) && node.body) found.push([node.body.start, node.body.end, node.body.type === 'BlockStatement']);
+    for (const value of Object.values(node)) {
+      if (Array.isArray(value)) value.forEach((item) => isNode(item) && visit(item));
+      else if (isNode(value)) visit(value);
+    }
+  };
+  visit(root);
+  return found;
 }
 
 function keyword(nodeType: string): string {

@@ -1,36 +1,44 @@
 /**
  * The reader's edits, kept in localStorage so a reload keeps their work.
  *
- * Key: `phasebook:v1:edit:<chapter slug>:<cell id>`.
- * Value: JSON {@link SavedEdit}. `base` is the hash of the chapter's original
- * cell source the edit was made from; when the chapter's cell has changed
- * since, the edit is offered to the reader rather than applied.
+ * Keys: `phasebook:v2:<secret>:<page>:edit:<cell id>` holds a {@link SavedEdit}
+ * as JSON, `…:running:<cell id>` marks a cell whose reader's code has been
+ * started but has not yet shown that the page survived it, and
+ * `phasebook:v2:secret` holds the secret.
  *
- * Storage can be missing, full or forbidden (private modes, disabled cookies):
- * every call here fails quietly, and the page works without persistence.
+ * - `<page>` is the chapter's path, base path included (`/phasebook/kepler/`),
+ *   so two books on one origin (GitHub Pages project sites share one) never
+ *   read each other's edits.
+ * - `<secret>` is 128 random bits this book draws in this browser on first
+ *   use. A page that does not know it cannot write an edit this book will
+ *   read, so nothing planted under a guessable key ever runs; see README,
+ *   "What a cell can do", for what this does and does not protect against.
+ *
+ * Storage can be missing, full or forbidden (private modes, disabled
+ * cookies): no call here throws, and every write says whether it took.
  */
 
 /** An edit of one cell, as stored. */
 export interface SavedEdit {
-  /** The reader's source text. */
-  readonly source: string;
+  /** The text in the reader's editor, run or not. */
+  readonly draft: string;
+  /** The text the reader last ran, or null when they never ran an edit (the original runs). */
+  readonly ran: string | null;
   /** `data-cell-hash` of the original the edit was made from. */
   readonly base: string;
   /** When it was saved, in ms since the epoch. */
   readonly savedAt: number;
+  /** Which page load wrote it (a random id per load), to tell another tab's writes from this one's. */
+  readonly tab: string;
 }
 
-const PREFIX = 'phasebook:v1:edit';
+/** Why a write did not take. */
+export type SaveFailure = 'unavailable' | 'full' | 'conflict';
 
-export function editKey(chapter: string, cellId: string): string {
-  return `${PREFIX}:${chapter}:${cellId}`;
-}
+export type SaveResult = { readonly ok: true; readonly edit: SavedEdit } | { readonly ok: false; readonly reason: SaveFailure; readonly current?: SavedEdit };
 
-function isSavedEdit(value: unknown): value is SavedEdit {
-  if (typeof value !== 'object' || value === null) return false;
-  const edit = value as Record<string, unknown>;
-  return typeof edit.source === 'string' && typeof edit.base === 'string' && typeof edit.savedAt === 'number';
-}
+const VERSION = 'phasebook:v2';
+const SECRET_KEY = `${VERSION}:secret`;
 
 function defaultStorage(): Storage | null {
   try {
@@ -40,43 +48,157 @@ function defaultStorage(): Storage | null {
   }
 }
 
-/** The saved edits of one chapter. */
-export class EditStore {
-  readonly #chapter: string;
-  readonly #storage: Storage | null;
+function randomId(): string {
+  const bytes = new Uint8Array(16);
+  crypto.getRandomValues(bytes);
+  return Array.from(bytes, (b) => b.toString(16).padStart(2, '0')).join('');
+}
 
-  constructor(chapter: string, storage: Storage | null = defaultStorage()) {
-    this.#chapter = chapter;
+function isSavedEdit(value: unknown): value is SavedEdit {
+  if (typeof value !== 'object' || value === null) return false;
+  const edit = value as Record<string, unknown>;
+  return typeof edit.draft === 'string' && (edit.ran === null || typeof edit.ran === 'string')
+    && typeof edit.base === 'string' && typeof edit.savedAt === 'number' && typeof edit.tab === 'string';
+}
+
+function isQuotaError(error: unknown): boolean {
+  return error instanceof DOMException && (error.name === 'QuotaExceededError' || error.name === 'NS_ERROR_DOM_QUOTA_REACHED');
+}
+
+/** The saved edits of one chapter page. */
+export class EditStore {
+  readonly #storage: Storage | null;
+  readonly #prefix: string | null;
+  /** This page load's id, written into every edit it saves. */
+  readonly tab: string;
+
+  /** `page` is the chapter's path, e.g. `location.pathname`. */
+  constructor(page: string, storage: Storage | null = defaultStorage(), tab: string = randomId()) {
     this.#storage = storage;
+    this.tab = tab;
+    const secret = this.#secret();
+    this.#prefix = secret ? `${VERSION}:${secret}:${page}` : null;
+  }
+
+  /** False when nothing can be kept (no storage, forbidden, or it would not keep the secret). */
+  get available(): boolean {
+    return this.#prefix !== null;
+  }
+
+  /** The key of a cell's edit, for recognising it in a `storage` event. */
+  editKey(cellId: string): string | null {
+    return this.#prefix && `${this.#prefix}:edit:${cellId}`;
   }
 
   load(cellId: string): SavedEdit | null {
+    return this.#parse(this.#get(this.editKey(cellId)));
+  }
+
+  /**
+   * Saves a cell's edit. Unless `force`, a newer edit written by another tab
+   * since `known` (the savedAt this tab last saw) is not overwritten: the
+   * result is a conflict carrying it.
+   */
+  save(cellId: string, edit: { draft: string; ran: string | null; base: string }, known: number | null, force = false): SaveResult {
+    const key = this.editKey(cellId);
+    if (!key || !this.#storage) return { ok: false, reason: 'unavailable' };
+    const current = this.load(cellId);
+    if (!force && current && current.tab !== this.tab && current.savedAt > (known ?? 0)) return { ok: false, reason: 'conflict', current };
+    const saved: SavedEdit = { ...edit, savedAt: Math.max(Date.now(), (current?.savedAt ?? 0) + 1), tab: this.tab };
     try {
-      const raw = this.#storage?.getItem(editKey(this.#chapter, cellId));
-      if (!raw) return null;
-      const parsed: unknown = JSON.parse(raw);
-      return isSavedEdit(parsed) ? parsed : null;
-    } catch {
-      return null;
+      this.#storage.setItem(key, JSON.stringify(saved));
+      return { ok: true, edit: saved };
+    } catch (error) {
+      return { ok: false, reason: isQuotaError(error) ? 'full' : 'unavailable' };
     }
   }
 
-  /** Returns false when the edit could not be kept (no storage, quota). */
-  save(cellId: string, source: string, base: string): boolean {
-    const edit: SavedEdit = { source, base, savedAt: Date.now() };
+  forget(cellId: string): void {
+    this.#remove(this.editKey(cellId));
+  }
+
+  /** Marks that the reader's code of a cell is about to run (see cell.ts); true if the mark could be kept. */
+  markRunning(cellId: string): boolean {
+    const key = this.#prefix && `${this.#prefix}:running:${cellId}`;
+    if (!key || !this.#storage) return false;
     try {
-      this.#storage?.setItem(editKey(this.#chapter, cellId), JSON.stringify(edit));
-      return this.#storage !== null;
+      this.#storage.setItem(key, String(Date.now()));
+      return true;
     } catch {
       return false;
     }
   }
 
-  forget(cellId: string): void {
+  clearRunning(cellId: string): void {
+    this.#remove(this.#prefix && `${this.#prefix}:running:${cellId}`);
+  }
+
+  /** True when a cell's code was started on an earlier load and the page never got to say it survived. */
+  wasRunning(cellId: string): boolean {
+    return this.#get(this.#prefix && `${this.#prefix}:running:${cellId}`) !== null;
+  }
+
+  /** Every edit of this page, for a download when storage fails. */
+  all(): { cellId: string; edit: SavedEdit }[] {
+    const found: { cellId: string; edit: SavedEdit }[] = [];
+    const prefix = this.#prefix && `${this.#prefix}:edit:`;
+    if (!prefix || !this.#storage) return found;
     try {
-      this.#storage?.removeItem(editKey(this.#chapter, cellId));
+      for (let i = 0; i < this.#storage.length; i++) {
+        const key = this.#storage.key(i);
+        const edit = key?.startsWith(prefix) ? this.#parse(this.#storage.getItem(key)) : null;
+        if (key && edit) found.push({ cellId: key.slice(prefix.length), edit });
+      }
+    } catch {
+      // What was read so far is what there is.
+    }
+    return found;
+  }
+
+  /** Parses the new value of a `storage` event for cell `cellId` (null: removed or not an edit). */
+  parseEvent(value: string | null): SavedEdit | null {
+    return this.#parse(value);
+  }
+
+  /** The browser's secret for this book: read, or drawn and kept; null when storage cannot keep it. */
+  #secret(): string | null {
+    const existing = this.#get(SECRET_KEY);
+    if (existing && /^[0-9a-f]{32}$/.test(existing)) return existing;
+    if (!this.#storage) return null;
+    const secret = randomId();
+    try {
+      this.#storage.setItem(SECRET_KEY, secret);
+      return this.#storage.getItem(SECRET_KEY) === secret ? secret : null;
+    } catch {
+      return null;
+    }
+  }
+
+  #get(key: string | null): string | null {
+    if (!key || !this.#storage) return null;
+    try {
+      return this.#storage.getItem(key);
+    } catch {
+      return null;
+    }
+  }
+
+  #remove(key: string | null): void {
+    if (!key) return;
+    try {
+      this.#storage?.removeItem(key);
     } catch {
       // Nothing to undo: the page keeps working without storage.
+    }
+  }
+
+  #parse(raw: string | null): SavedEdit | null {
+    if (!raw) return null;
+    try {
+      const parsed: unknown = JSON.parse(raw);
+      return isSavedEdit(parsed) ? parsed : null;
+    } catch {
+      return null;
     }
   }
 }

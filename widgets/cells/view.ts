@@ -8,9 +8,11 @@ import type { CellSpec } from './spec.ts';
 /**
  * `compile`: the reader's text does not parse (the old definition keeps running).
  * `runtime`: the running definition threw, or one of its inputs did.
+ * `later`: code of the cell failed after it gave its value (a timer, a handler,
+ *   a promise it let go, a request the book blocked).
  */
-export type ErrorKind = 'compile' | 'runtime';
-const ERROR_ORDER: readonly ErrorKind[] = ['compile', 'runtime'];
+export type ErrorKind = 'compile' | 'runtime' | 'later';
+const ERROR_ORDER: readonly ErrorKind[] = ['compile', 'runtime', 'later'];
 
 /**
  * `waiting`: not started yet (it starts when it comes near the view, or when
@@ -163,11 +165,15 @@ export class CellView {
     this.#notice.replaceChildren();
   }
 
-  /** Marks the cell as differing from the chapter's original (Reset becomes available). */
-  setEdited(edited: boolean): void {
+  /**
+   * Marks the cell as differing from the chapter's original (Reset becomes
+   * available), and says when the text shown is not the code that runs.
+   */
+  setEdited(edited: boolean, unrun = false): void {
     this.root.toggleAttribute('data-cell-edited', edited);
+    this.root.toggleAttribute('data-cell-unrun', unrun);
     this.resetButton.disabled = !edited;
-    this.#status.textContent = edited ? 'edited' : '';
+    this.#status.textContent = unrun ? 'not run yet' : edited ? 'edited' : '';
   }
 
   setBusy(busy: boolean): void {

@@ -2,6 +2,7 @@ import { describe, expect, test } from 'vitest';
 import { parseCell } from '@observablehq/parser';
 import { cellBody, compileCell } from '../../../widgets/cells/compile.ts';
 import { describeCell, formatError, type CellSpec } from '../../../widgets/cells/spec.ts';
+import { LoopGuard, LoopStopped } from '../../../widgets/cells/loop-guard.ts';
 
 function specOf(source: string): CellSpec {
   return describeCell(parseCell(source));
@@ -25,6 +26,7 @@ describe('describeCell(parseCell(source))', () => {
       generator: false,
       body: [9, 31],
       block: false,
+      loops: [],
     });
   });
 
@@ -85,5 +87,78 @@ describe('compileCell(source, spec, label)', () => {
 
   test('cannot be broken out of: the parser refuses unbalanced source first', () => {
     expect(errorOf(() => specOf('x = 1); globalThis.hacked = 1; (2'))).toMatch(/^SyntaxError: .*\(1:5\)$/);
+  });
+});
+
+describe('loops in cells are guarded: a runaway loop stops with an error naming its cell', () => {
+  /** A clock that moves 1 ms each time it is read, so a loop that checks it every iteration runs out in 2000 iterations. */
+  const ticking = () => {
+    let t = 0;
+    return () => (t += 1);
+  };
+
+  test('describeCell lists every loop body, in functions too, and whether it is a block', () => {
+    const source = 'x = { for (const a of b) f(a); let i = 0; do i++; while (i < 3); const g = () => { while (c) { i-- } }; return i }';
+    const loops = specOf(source).loops ?? [];
+    expect(loops.map(([s, e, block]) => [source.slice(s, e), block])).toEqual([
+      ['f(a);', false],
+      ['i++;', false],
+      ['{ i-- }', true],
+    ]);
+  });
+
+  test('an endless loop breaks, and the cell fails with a LoopStopped naming it', () => {
+    const guard = new LoopGuard(ticking());
+    const source = 'spin = { let n = 0; while (true) { n++; } return n }';
+    const run = compileCell(source, specOf(source), 'spin', guard) as () => unknown;
+    const error = (() => {
+      try {
+        run();
+      } catch (e) {
+        return e;
+      }
+    })();
+    expect(error).toBeInstanceOf(LoopStopped);
+    expect(formatError(error)).toMatch(/^RuntimeError: a loop in cell spin ran for more than 2 s/);
+  });
+
+  test('a loop without braces and a do-while are guarded too', () => {
+    for (const source of ['a = { let n = 0; for (;;) n++; }', 'b = { let n = 0; do n++; while (true) }']) {
+      const run = compileCell(source, specOf(source), 'x', new LoopGuard(ticking())) as () => unknown;
+      expect(run).toThrow(LoopStopped);
+    }
+  });
+
+  test('a loop that finishes in time gives its value untouched', () => {
+    const source = 'sum = { let s = 0; for (let i = 1; i <= 1000; i++) s += i; return s }';
+    expect((compileCell(source, specOf(source), 'sum', new LoopGuard(() => 0)) as () => unknown)()).toBe(500500);
+  });
+
+  test('a runaway loop in a function from one cell, called by another, fails the caller naming the function’s cell', () => {
+    const guard = new LoopGuard(ticking());
+    const a = 'forever = () => { while (true) {} }';
+    const b = 'result = forever()';
+    const forever = (compileCell(a, specOf(a), 'forever', guard) as () => unknown)();
+    const result = compileCell(b, specOf(b), 'result', guard) as (f: unknown) => unknown;
+    expect(() => result(forever)).toThrow(/a loop in cell forever/);
+  });
+
+  test('an async cell whose loop runs away after an await rejects', async () => {
+    const source = 'later = { await null; while (true) {} }';
+    const run = compileCell(source, specOf(source), 'later', new LoopGuard(ticking())) as () => Promise<unknown>;
+    await expect(run()).rejects.toThrow(LoopStopped);
+  });
+
+  test('a generator looping around yield runs on: each resumption is a new run', async () => {
+    const source = 'ticks = { let i = 0; while (true) { yield i++; } }';
+    const clock = ticking();
+    const run = compileCell(source, specOf(source), 'ticks', new LoopGuard(clock)) as () => Iterator<number>;
+    const generator = run();
+    const values: number[] = [];
+    for (let k = 0; k < 3000; k++) {
+      values.push(generator.next().value as number);
+      await Promise.resolve(); // the browser's turn between frames
+    }
+    expect(values[2999]).toBe(2999);
   });
 });

@@ -1,63 +1,117 @@
 import { describe, expect, test } from 'vitest';
-import { EditStore, editKey } from '../../../widgets/cells/storage.ts';
+import { EditStore } from '../../../widgets/cells/storage.ts';
 
-/** An in-memory Storage; `broken` makes every call throw, as a forbidden localStorage does. */
-function memoryStorage(broken = false): Storage {
+/** An in-memory Storage; `fail` makes writes (or every call) throw as a full or forbidden localStorage does. */
+function memoryStorage(fail: 'none' | 'forbidden' | 'full' = 'none'): Storage {
   const items = new Map<string, string>();
-  const guard = () => {
-    if (broken) throw new DOMException('denied', 'SecurityError');
+  const guard = (write: boolean) => {
+    if (fail === 'forbidden') throw new DOMException('denied', 'SecurityError');
+    if (fail === 'full' && write) throw new DOMException('full', 'QuotaExceededError');
   };
   return {
     get length() {
       return items.size;
     },
     clear: () => items.clear(),
-    getItem: (key) => (guard(), items.get(key) ?? null),
+    getItem: (key) => (guard(false), items.get(key) ?? null),
     key: (index) => [...items.keys()][index] ?? null,
-    removeItem: (key) => (guard(), void items.delete(key)),
-    setItem: (key, value) => (guard(), void items.set(key, value)),
+    removeItem: (key) => (guard(true), void items.delete(key)),
+    setItem: (key, value) => (guard(true), void items.set(key, value)),
   };
 }
 
-describe('EditStore(chapter, storage)', () => {
-  test('editKey(chapter, cellId) names the chapter and the cell', () => {
-    expect(editKey('introduction', 'omega')).toBe('phasebook:v1:edit:introduction:omega');
-  });
+const edit = (draft: string, ran: string | null = draft, base = 'h') => ({ draft, ran, base });
 
-  test('save then load returns the source and the base hash', () => {
-    const store = new EditStore('introduction', memoryStorage());
-    expect(store.save('omega', 'omega = 5', 'abc123')).toBe(true);
-    expect(store.load('omega')).toMatchObject({ source: 'omega = 5', base: 'abc123' });
+describe('EditStore(page, storage, tab)', () => {
+  test('save then load gives back the draft, what ran, the base hash and who wrote it', () => {
+    const store = new EditStore('/introduction/', memoryStorage(), 'tab1');
+    const result = store.save('omega', edit('omega = 6', 'omega = 5'), null);
+    expect(result.ok).toBe(true);
+    expect(store.load('omega')).toMatchObject({ draft: 'omega = 6', ran: 'omega = 5', base: 'h', tab: 'tab1' });
     expect(store.load('period')).toBeNull();
   });
 
-  test('keeps chapters apart', () => {
+  test('keys carry the page path (base path included) and a secret drawn once per browser', () => {
     const storage = memoryStorage();
-    new EditStore('introduction', storage).save('x', 'x = 1', 'h');
-    expect(new EditStore('about', storage).load('x')).toBeNull();
+    const book = new EditStore('/phasebook/kepler/', storage);
+    book.save('k', edit('k = 1'), null);
+    expect(new EditStore('/other-book/kepler/', storage).load('k')).toBeNull();
+    expect(new EditStore('/phasebook/kepler/', storage).load('k')).toMatchObject({ draft: 'k = 1' });
+    const key = book.editKey('k')!;
+    expect(key).toMatch(/^phasebook:v2:[0-9a-f]{32}:\/phasebook\/kepler\/:edit:k$/);
+    expect(storage.getItem(key)).not.toBeNull();
   });
 
-  test('forget removes the edit', () => {
-    const store = new EditStore('introduction', memoryStorage());
-    store.save('omega', 'omega = 5', 'h');
-    store.forget('omega');
+  test('an edit planted under a key without the secret is never read', () => {
+    const storage = memoryStorage();
+    const store = new EditStore('/introduction/', storage);
+    // What an attacker on the same origin could guess: the old v1 key and the v2 key with any other secret.
+    storage.setItem('phasebook:v1:edit:introduction:omega', JSON.stringify({ source: 'fetch("//evil")', base: 'h', savedAt: 1 }));
+    storage.setItem(`phasebook:v2:${'0'.repeat(32)}:/introduction/:edit:omega`, JSON.stringify({ draft: 'x', ran: 'x', base: 'h', savedAt: 1, tab: 't' }));
     expect(store.load('omega')).toBeNull();
   });
 
-  test('load ignores corrupt or foreign values', () => {
+  test('a newer edit from another tab is not overwritten: the save reports a conflict with it', () => {
     const storage = memoryStorage();
-    storage.setItem(editKey('c', 'a'), '{not json');
-    storage.setItem(editKey('c', 'b'), JSON.stringify({ source: 1 }));
-    const store = new EditStore('c', storage);
+    const mine = new EditStore('/p/', storage, 'mine');
+    const theirs = new EditStore('/p/', storage, 'theirs');
+    const first = mine.save('a', edit('a = 1'), null);
+    if (!first.ok) throw new Error('first save failed');
+    const known = first.edit.savedAt;
+    expect(theirs.save('a', edit('a = 2'), known).ok).toBe(true);
+    const clash = mine.save('a', edit('a = 3'), known);
+    expect(clash).toMatchObject({ ok: false, reason: 'conflict', current: { draft: 'a = 2', tab: 'theirs' } });
+    expect(mine.load('a')).toMatchObject({ draft: 'a = 2' });
+    // Forced, as when the reader chooses to keep theirs over mine.
+    expect(mine.save('a', edit('a = 3'), known, true).ok).toBe(true);
+    expect(theirs.load('a')).toMatchObject({ draft: 'a = 3', tab: 'mine' });
+  });
+
+  test('running marks: set, seen by the next load, cleared', () => {
+    const storage = memoryStorage();
+    new EditStore('/p/', storage).markRunning('loop');
+    const next = new EditStore('/p/', storage);
+    expect(next.wasRunning('loop')).toBe(true);
+    expect(next.wasRunning('other')).toBe(false);
+    next.clearRunning('loop');
+    expect(new EditStore('/p/', storage).wasRunning('loop')).toBe(false);
+  });
+
+  test('all() lists this page’s edits only, for a download', () => {
+    const storage = memoryStorage();
+    const store = new EditStore('/p/', storage);
+    store.save('a', edit('a = 1'), null);
+    store.save('b', edit('b = 2', null), null);
+    new EditStore('/q/', storage).save('c', edit('c = 3'), null);
+    expect(store.all().map(({ cellId }) => cellId).sort()).toEqual(['a', 'b']);
+  });
+
+  test('ignores corrupt or foreign values', () => {
+    const storage = memoryStorage();
+    const store = new EditStore('/c/', storage);
+    storage.setItem(store.editKey('a')!, '{not json');
+    storage.setItem(store.editKey('b')!, JSON.stringify({ draft: 1 }));
     expect(store.load('a')).toBeNull();
     expect(store.load('b')).toBeNull();
   });
 
-  test('fails quietly when storage is forbidden or missing', () => {
-    for (const store of [new EditStore('c', memoryStorage(true)), new EditStore('c', null)]) {
-      expect(store.save('a', 'a = 1', 'h')).toBe(false);
+  test('says why a write did not take: full, or no storage at all; nothing throws', () => {
+    const full = new EditStore('/c/', memoryStorage('full'));
+    expect(full.available).toBe(false);
+    for (const store of [new EditStore('/c/', memoryStorage('forbidden')), new EditStore('/c/', null), full]) {
+      expect(store.save('a', edit('a = 1'), null)).toMatchObject({ ok: false, reason: 'unavailable' });
       expect(store.load('a')).toBeNull();
       expect(() => store.forget('a')).not.toThrow();
+      expect(store.markRunning('a')).toBe(false);
     }
+    // Full only once the secret is kept: the edit itself then does not fit.
+    const storage = memoryStorage();
+    const store = new EditStore('/c/', storage);
+    const real = storage.setItem;
+    storage.setItem = () => {
+      throw new DOMException('full', 'QuotaExceededError');
+    };
+    expect(store.save('a', edit('a = 1'), null)).toMatchObject({ ok: false, reason: 'full' });
+    storage.setItem = real;
   });
 });

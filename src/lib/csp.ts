@@ -1,0 +1,41 @@
+/**
+ * The book's Content-Security-Policy, as a <meta> tag (a static site sets no
+ * headers). Cells run the reader's code, and that code must stay inside the
+ * book: no request, image, script, import or worker from any host but the
+ * book's own, so nothing a reader types (or pastes) can send their data
+ * elsewhere or fetch code to run. What the book itself needs:
+ *
+ * - `'unsafe-eval'`: cells and the generated steppers are compiled with
+ *   `new Function` (widgets/cells/compile.ts, widgets/core/expression/);
+ * - the hashes of the page's own inline scripts (theme, fonts), and no
+ *   other inline script;
+ * - inline styles (KaTeX's typesetting and the widgets position things
+ *   with style attributes);
+ * - `data:` and `blob:` images (the favicon, plot downloads).
+ *
+ * A blocked request shows under the cell that made it (widgets/cells/boot.ts).
+ */
+import { createHash } from 'node:crypto';
+
+/** The CSP source expression of an inline script's exact text. */
+export function scriptHash(text: string): string {
+  return `'sha256-${createHash('sha256').update(text, 'utf8').digest('base64')}'`;
+}
+
+export function contentSecurityPolicy(inlineScripts: readonly string[]): string {
+  const directives = [
+    "default-src 'self'",
+    `script-src 'self' 'unsafe-eval' ${inlineScripts.map(scriptHash).join(' ')}`,
+    "style-src 'self' 'unsafe-inline'",
+    "img-src 'self' data: blob:",
+    "font-src 'self' data:",
+    "connect-src 'self'",
+    "worker-src 'self'",
+    "media-src 'self'",
+    "object-src 'none'",
+    "frame-src 'none'",
+    "base-uri 'self'",
+    "form-action 'self'",
+  ];
+  return directives.join('; ');
+}
