@@ -1,5 +1,8 @@
 import { BlowUpError, InputError } from '../core/errors.ts';
 import { VERSION } from '../core/version.ts';
+import { Interrupted } from './interrupt.ts';
+import { OutputError } from './output-error.ts';
+import { byteSize, count, OUTPUT_LIMIT, STEP_LIMIT } from './run-size.ts';
 import { SIMULATE_USAGE, simulate } from './simulate.ts';
 import { SPECTRUM_USAGE, spectrumCommand } from './spectrum.ts';
 
@@ -13,11 +16,17 @@ function ((t, x) => x[1]**2/2 + x[0]**2/2); --param values are visible to both.
 A vector field ((t, x, dxdt) => { dxdt[0] = x[1]; dxdt[1] = -x[0]; }) is
 integrated as written. Compiled models are cached in $PHASEBOOK_CACHE_DIR,
 else $XDG_CACHE_HOME/phasebook/models, else ~/.cache/phasebook/models.
+
+A run of more than ${count(STEP_LIMIT)} steps or about ${byteSize(OUTPUT_LIMIT)} of output is refused unless
+--force is given. --output FILE appears only when complete; Ctrl-C (SIGINT) or
+SIGTERM removes the partial file and exits with status 130 or 143.
 `;
 
 /**
- * Runs one command. Any problem with the input ends in one line on stderr and
- * exit status 2: a user mistake deserves a sentence, not a stack trace.
+ * Runs one command. Any problem with the input, or with writing the output
+ * (a full disk, a read-only directory), ends in one line on stderr and exit
+ * status 2: a user mistake deserves a sentence, not a stack trace. A run
+ * stopped by a signal ends in one line and the shell's status for it.
  */
 export async function main(argv: readonly string[]): Promise<number> {
   const [command, ...rest] = argv;
@@ -41,7 +50,11 @@ export async function main(argv: readonly string[]): Promise<number> {
         throw new InputError(`unknown command "${command}"; use simulate or spectrum (phasebook --help)`);
     }
   } catch (error) {
-    const known = error instanceof InputError || error instanceof BlowUpError;
+    if (error instanceof Interrupted) {
+      process.stderr.write(`phasebook: ${error.message}\n`);
+      return error.status;
+    }
+    const known = error instanceof InputError || error instanceof BlowUpError || error instanceof OutputError;
     const message = known ? error.message : `internal error: ${(error as Error)?.message ?? String(error)}`;
     process.stderr.write(`phasebook: ${message.split('\n')[0]}\n`);
     return 2;

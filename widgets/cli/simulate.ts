@@ -4,15 +4,18 @@ import { exportMeta } from '../core/export-meta.ts';
 import { jsonHead, jsonRows, jsonTail, type ExportMeta } from '../core/json.ts';
 import { DEFAULT_DT, Simulation } from '../core/simulation.ts';
 import { number, numberList, params, parseArgs, positive, wholeNumber } from './args.ts';
+import { Interrupted, InterruptGuard } from './interrupt.ts';
 import { checkEvaluates, simulationModel } from './model.ts';
 import { fileSink, stdoutSink, type Sink } from './output.ts';
+import { pacedRun } from './paced-run.ts';
 import { progressBar } from './progress.ts';
+import { checkRunSize, runSize } from './run-size.ts';
 
 export const SIMULATE_USAGE = `phasebook simulate --hamiltonian H --dof N --initial v1,…,v2N [--param name=value]…
-                   [--dt 5e-4] [--t-end 10] [--every 1] [--format csv|json] [--output FILE] [--no-cache]
+                   [--dt 5e-4] [--t-end 10] [--every 1] [--format csv|json] [--output FILE] [--no-cache] [--force]
   phasebook simulate --vector-field '(t, x, dxdt) => { … }' [--hamiltonian '(t, x) => …'] --dof N …`;
 
-/** Rows written per block: large enough to amortise, small enough to report progress. */
+/** Rows the record holds between writes: enough to amortise a write, few enough to keep memory flat. */
 const ROWS_PER_BLOCK = 4096;
 
 export async function simulate(argv: readonly string[]): Promise<void> {
@@ -28,6 +31,7 @@ export async function simulate(argv: readonly string[]): Promise<void> {
     format: 'value',
     output: 'value',
     'no-cache': 'flag',
+    force: 'flag',
   });
   const required = (name: string) => {
     const v = args.values.get(name);
@@ -52,9 +56,9 @@ export async function simulate(argv: readonly string[]): Promise<void> {
 
   const model = await simulationModel({ dof, hamiltonian, vectorField, params: values, cache: !args.flags.has('no-cache') });
   checkEvaluates(model, initial);
-  // t-end is reached by a whole number of steps; a hair of tolerance keeps 10/5e-4 from losing its last step.
-  const steps = Math.floor(tEnd / dt + 1e-9);
   const simulation = new Simulation(model, { initial, dt, every, capacity: ROWS_PER_BLOCK + 1 });
+  const size = runSize({ tEnd, dt, every, columns: simulation.record.width, format });
+  checkRunSize(size, args.flags.has('force'));
   const meta = exportMeta(simulation);
   if (vectorField !== undefined) {
     // The field is what was integrated; H, when given, only fills its column.
@@ -62,17 +66,21 @@ export async function simulate(argv: readonly string[]): Promise<void> {
     meta.vectorField = vectorField;
   }
   const output = args.values.get('output');
-  const sink: Sink = output ? fileSink(output) : stdoutSink();
+  const guard = new InterruptGuard();
+  const sink: Sink = output ? fileSink(output, guard) : stdoutSink();
   try {
-    write(simulation, steps, format, meta, sink);
+    await write(simulation, size.steps, format, meta, sink, guard.signal);
     sink.commit();
   } catch (error) {
     sink.abandon();
+    if (error instanceof Interrupted) {
+      throw new Interrupted(error.signal, ` at t = ${simulation.t.toPrecision(6)} of ${tEnd}; ${output ?? 'the output'} was not written`);
+    }
     throw error;
   }
 }
 
-function write(simulation: Simulation, steps: number, format: string, meta: ExportMeta, sink: Sink): void {
+async function write(simulation: Simulation, steps: number, format: string, meta: ExportMeta, sink: Sink, signal: AbortSignal): Promise<void> {
   const { record } = simulation;
   const progress = progressBar();
   sink.write(format === 'csv' ? csvHeader(record.columns) : jsonHead(meta, record.columns));
@@ -87,16 +95,15 @@ function write(simulation: Simulation, steps: number, format: string, meta: Expo
     }
     record.clear();
   };
-  const block = ROWS_PER_BLOCK * simulation.every;
-  while (simulation.steps < steps) {
-    simulation.run(Math.min(block, steps - simulation.steps));
-    if (simulation.error) {
-      throw new InputError(simulation.error.message);
-    }
-    flush();
-    progress.update(simulation.steps / steps, `t = ${simulation.t.toPrecision(6)}`);
+  try {
+    await pacedRun(simulation, steps, {
+      flush,
+      progress: () => progress.update(simulation.steps / steps, `t = ${simulation.t.toPrecision(6)}`),
+      signal,
+    });
+    if (format === 'json') sink.write(jsonTail());
+  } finally {
+    // Before any message, so that it starts on a clean line.
+    progress.done();
   }
-  flush();
-  if (format === 'json') sink.write(jsonTail());
-  progress.done();
 }
