@@ -3,6 +3,8 @@
  * reader and no value, so the control can keep its old value and say why.
  */
 
+import { MAX_DT, MIN_DT } from '../simulator/limits.ts';
+
 export type Parsed = { value: number; error?: undefined } | { value?: undefined; error: string };
 
 /**
@@ -18,12 +20,13 @@ export function parseNumber(text: string, name: string): Parsed {
   return { value };
 }
 
-/** A time step: a positive number, below `max` (default 1, beyond which RK 3/8 at a fixed step is rarely meaningful). */
-export function parseDt(text: string, max = 1): Parsed {
+/** A time step: a positive number within the book's bounds (simulator/limits.ts). */
+export function parseDt(text: string, min = MIN_DT, max = MAX_DT): Parsed {
   const parsed = parseNumber(text, 'dt');
   if (parsed.error !== undefined) return parsed;
   if (!(parsed.value > 0)) return { error: `dt must be positive, not ${parsed.value}` };
   if (parsed.value > max) return { error: `dt = ${parsed.value} is too large; use at most ${max}` };
+  if (parsed.value < min) return { error: `dt = ${parsed.value} is too small; use at least ${min}` };
   return parsed;
 }
 

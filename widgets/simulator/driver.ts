@@ -1,3 +1,4 @@
+import { MAX_SPEED, outside } from './limits.ts';
 import type { Simulation } from '../core/simulation.ts';
 import { carryOver, DEFAULT_BUDGET, integrateFrame, owedSteps, type Budget } from './frame-budget.ts';
 import type { View } from './view.ts';
@@ -248,5 +249,7 @@ export class Driver {
 
 function checkSpeed(speed: number): number {
   if (!(speed > 0) || !Number.isFinite(speed)) throw new Error(`speed must be a positive number of time units per second, not ${speed}`);
+  const bound = outside('speed', speed, 0, MAX_SPEED, ' time units per second');
+  if (bound) throw new Error(bound);
   return speed;
 }

@@ -10,6 +10,7 @@ import {
   BATCH_EVERY, checkOptionNames, defaultCapacity, derivedSeries, flattenInitial, modelSpec, oneLine, recordWidth, viewNames,
   type DerivedFunction, type ViewName,
 } from './options.ts';
+import { MAX_BATCH, MAX_DOF, MAX_DT, MAX_SPEED, MIN_DT, outside } from './limits.ts';
 import { VIEW_MODULES } from './view-modules.ts';
 import type { View } from './view.ts';
 
@@ -78,6 +79,8 @@ export async function simulator(options: SimulatorOptions, build: BuildOptions =
   loading.catch(() => undefined);
   const model = await buildModel(options, build);
   const { values, count } = flattenInitial(options.initial, model.dim);
+  if (count > MAX_BATCH) throw new Error(`simulator: a batch of ${count} trajectories is more than the book runs at once, ${MAX_BATCH}`);
+  if (model.dof > MAX_DOF) throw new Error(`simulator: ${model.dof} degrees of freedom are more than the book allows, ${MAX_DOF}`);
   const derived = derivedSeries(options.derived, model);
   checkEvaluates(model, values, derived);
   const every = options.every ?? (count > 1 ? BATCH_EVERY : 1);
@@ -107,12 +110,17 @@ async function buildModel(options: SimulatorOptions, build: BuildOptions): Promi
   }
 }
 
-/** Speed and capacity, checked here so their messages name the option. */
+/** Speed, dt, dof and capacity, checked here so their messages name the option (limits.ts). */
 function checkNumbers(options: SimulatorOptions): void {
-  const { speed, capacity } = options;
+  const { speed, capacity, dt, dof } = options;
   if (speed !== undefined && !(typeof speed === 'number' && speed > 0 && Number.isFinite(speed))) {
     throw new Error(`simulator: speed must be a positive number of time units per second, not ${String(speed)}`);
   }
+  const bound =
+    (speed !== undefined ? outside('speed', speed, 0, MAX_SPEED, ' time units per second') : null)
+    ?? (dt !== undefined ? outside('dt', Number(dt), MIN_DT, MAX_DT) : null)
+    ?? (dof !== undefined ? outside('dof', Number(dof), 1, MAX_DOF) : null);
+  if (bound) throw new Error(`simulator: ${bound}`);
   if (capacity !== undefined && !(Number.isInteger(capacity) && capacity >= 2)) {
     throw new Error(`simulator: capacity must be a whole number of rows, at least 2, not ${String(capacity)}`);
   }

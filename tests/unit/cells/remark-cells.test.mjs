@@ -31,7 +31,7 @@ describe('remarkCells()', () => {
     expect(omega.data.hName).toBe('figure');
     expect(omega.data.hProperties).toMatchObject({ dataCell: 'omega', dataCellName: 'omega', dataCellHash: hashSource('omega = 10') });
     expect(JSON.parse(period.data.hProperties.dataCellSpec)).toEqual({
-      name: 'period', inputs: ['PI', 'omega'], async: false, generator: false, body: [9, 23], block: false,
+      name: 'period', inputs: ['PI', 'omega'], async: false, generator: false, body: [9, 23], block: false, loops: [],
     });
     expect(plain.type).toBe('code');
     expect(file.data.astro.frontmatter.cells).toBe(2);
