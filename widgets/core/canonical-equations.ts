@@ -1,3 +1,4 @@
+import type { BuildControl } from './build-control.ts';
 import { isCompiledModel, modelKey, type CompiledModel, type CompiledModelStore, type ModelKeySpec } from './compiled-model.ts';
 import { InputError } from './errors.ts';
 import { stateNames } from './expression/names.ts';
@@ -27,7 +28,7 @@ export interface HamiltonianSpec {
   differentiation?: 'auto' | 'stencil';
 }
 
-export interface BuildOptions {
+export interface BuildOptions extends BuildControl {
   /**
    * Compiled models kept from earlier: the page's build-time data, the CLI's
    * cache. A model found there is built without loading mathjs or acorn; one
@@ -35,7 +36,7 @@ export interface BuildOptions {
    */
   store?: CompiledModelStore;
   /** How to compile on a miss: by default the core's compileModel, loaded on first use. */
-  compile?: (spec: ModelKeySpec) => Promise<CompiledModel>;
+  compile?: (spec: ModelKeySpec, control?: BuildControl) => Promise<CompiledModel>;
 }
 
 /**
@@ -69,7 +70,7 @@ export async function compiledModelFor(spec: ModelKeySpec, options: BuildOptions
   const stored = await store?.get(key);
   if (isCompiledModel(stored, key)) return stored;
   const compile = options.compile ?? (await import('./compile-model.ts')).compileModel;
-  const compiled = await compile(spec);
+  const compiled = await compile(spec, { signal: options.signal, progress: options.progress });
   await store?.put?.(compiled);
   return compiled;
 }

@@ -3,6 +3,7 @@
  * model, which loads mathjs (for an expression) or acorn (for a JS function)
  * on first use.
  */
+import { throwIfAborted, type BuildControl } from './build-control.ts';
 import { COMPILED_FORMAT, hamiltonianSource, modelKey, type CompiledModel, type ModelKeySpec } from './compiled-model.ts';
 import { InputError } from './errors.ts';
 import { compileExpression } from './expression/compile.ts';
@@ -17,8 +18,12 @@ import { translateFunction } from './js-function/translate.ts';
  *   translated to an expression and gets the same;
  * - any other JS function (or `differentiation: 'stencil'`) is left opaque,
  *   for 5-point central differences.
+ *
+ * `control` lets the caller abort a build superseded by a new edit (it stops
+ * between two derivatives with an AbortError) and follow its progress.
  */
-export async function compileModel(spec: ModelKeySpec): Promise<CompiledModel> {
+export async function compileModel(spec: ModelKeySpec, control: BuildControl = {}): Promise<CompiledModel> {
+  throwIfAborted(control.signal);
   const key = modelKey(spec);
   const source = hamiltonianSource(spec.hamiltonian);
   const paramNames = Object.keys(spec.params ?? {});
@@ -27,7 +32,7 @@ export async function compileModel(spec: ModelKeySpec): Promise<CompiledModel> {
   const expression = { dof: spec.dof, paramNames, coordinates: spec.coordinates, momenta: spec.momenta };
 
   if (typeof spec.hamiltonian === 'string' && !isFunctionSource(spec.hamiltonian)) {
-    const { code, latex } = await compileExpression({ ...expression, source });
+    const { code, latex } = await compileExpression({ ...expression, source }, control);
     return { ...common, route: 'expression', code, latex };
   }
   const program = await parseFunction(source);
@@ -35,7 +40,7 @@ export async function compileModel(spec: ModelKeySpec): Promise<CompiledModel> {
     const translated = translateFunction(program, names, paramNames);
     if ('expression' in translated) {
       try {
-        const { code, latex } = await compileExpression({ ...expression, source: translated.expression });
+        const { code, latex } = await compileExpression({ ...expression, source: translated.expression }, control);
         return { ...common, route: 'js-translated', code, latex };
       } catch (error) {
         // A function mathjs cannot differentiate: finite differences still work.

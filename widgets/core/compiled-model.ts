@@ -23,7 +23,7 @@ import type { OpaqueHamiltonian } from './js-function/stencil.ts';
  * Bumped whenever the generated code or this layout changes, so that data
  * compiled by another version is never used: it is compiled afresh instead.
  */
-export const COMPILED_FORMAT = 1;
+export const COMPILED_FORMAT = 2;
 
 /** The routes that start from H and so can be compiled ahead. */
 export type CompiledRoute = 'expression' | 'js-translated' | 'js-stencil';

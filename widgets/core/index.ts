@@ -1,5 +1,6 @@
 /** The simulation core: DOM-free, shared by the widgets, the CLI and the tests. */
-export { canonicalEquations, type HamiltonianSpec } from './canonical-equations.ts';
+export { canonicalEquations, type HamiltonianSpec, type BuildOptions } from './canonical-equations.ts';
+export { abortError, type BuildControl } from './build-control.ts';
 export { rk38 } from './rk38.ts';
 export { Simulation, DEFAULT_DT, type DerivedSeries, type SimulationOptions } from './simulation.ts';
 export { TrajectoryRecord, capacityFor, bytesFor, type Table } from './record.ts';

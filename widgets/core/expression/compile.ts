@@ -1,10 +1,13 @@
 import type { MathNode } from 'mathjs';
+import { BuildTracker, throwIfAborted, type BuildControl } from '../build-control.ts';
 import { InputError } from '../errors.ts';
 import { SUPPORTED_FUNCTIONS } from './emit.ts';
 import { evaluatorSource, fusedStepperSource, type RateExpressions } from './fused-stepper.ts';
 import { CONSTANTS, checkName, stateNames } from './names.ts';
 import { latexOf } from './latex.ts';
 import { loadMathjs, type MathJs } from './mathjs.ts';
+import { Partials } from './partials.ts';
+import { Tidy } from './tidy.ts';
 
 export interface ExpressionSpec {
   /** H in mathjs syntax, e.g. `p^2/2 + omega0^2*q^2/2 + alpha*q^3` */
@@ -22,13 +25,44 @@ export interface CompiledExpression {
   latex: { hamiltonian: string; equations: string[] };
 }
 
+/** H parsed, checked and with its names resolved: the first stage of a compile. */
+export interface ParsedHamiltonian {
+  dof: number;
+  /** q's then p's */
+  names: string[];
+  paramNames: readonly string[];
+  hamiltonian: MathNode;
+}
+
+/** Hamilton's equations of H: the second stage of a compile. */
+export interface HamiltonEquations {
+  /** The rate of each state component, as the stepper computes it: ∂H/∂p, or ∂H/∂q to be negated. */
+  rates: { node: MathNode; negate: boolean }[];
+  /** The right-hand sides as read: ∂H/∂p, and −∂H/∂q with the minus worked in. */
+  readable: MathNode[];
+}
+
 /**
  * Compiles H given as a math expression: exact symbolic partial derivatives
- * (mathjs `derivative`) written out as one fused RK 3/8 stepper and two
- * evaluators, all as source text for `new Function`.
+ * (mathjs `derivative`, term by term) written out as one fused RK 3/8
+ * stepper and two evaluators, all as source text for `new Function`.
+ *
+ * The work is 2·dof derivatives and then the code; `control` can watch it
+ * (one unit per derivative, one for the code) and abort it between any two.
  */
-export async function compileExpression(spec: ExpressionSpec): Promise<CompiledExpression> {
+export async function compileExpression(spec: ExpressionSpec, control: BuildControl = {}): Promise<CompiledExpression> {
+  throwIfAborted(control.signal);
   const math = await loadMathjs();
+  const parsed = parseHamiltonian(math, spec);
+  const tracker = new BuildTracker(control, parsed.names.length + 1);
+  const equations = await hamiltonEquations(math, parsed, tracker);
+  const compiled = generateCode(parsed, equations);
+  await tracker.step();
+  return compiled;
+}
+
+/** Parses H, resolves aliases and rejects what the compiler cannot handle. */
+export function parseHamiltonian(math: MathJs, spec: ExpressionSpec): ParsedHamiltonian {
   const { names, aliases } = stateNames(spec.dof, spec.coordinates, spec.momenta);
   const paramNames = spec.paramNames ?? [];
   for (const name of paramNames) {
@@ -36,11 +70,35 @@ export async function compileExpression(spec: ExpressionSpec): Promise<CompiledE
     if (names.includes(name)) throw new InputError(`the parameter ${name} has the name of a state component`);
   }
   const hamiltonian = prepare(math, parseExpression(math, spec.source), names, aliases, paramNames);
-  const dof = spec.dof;
-  const rates = names.map((_, i) => {
+  return { dof: spec.dof, names, paramNames, hamiltonian };
+}
+
+/**
+ * The 2·dof partial derivatives of H, term by term and unsimplified
+ * (partials.ts), each tidied in time linear in its size (tidy.ts). For an H
+ * that is a sum of terms of a few coordinates each, as a chain's is, the
+ * whole costs time about linear in dof; at worst, an H of one term with
+ * every coordinate in it, 2·dof derivatives of the whole of H.
+ */
+export async function hamiltonEquations(math: MathJs, parsed: ParsedHamiltonian, tracker?: BuildTracker): Promise<HamiltonEquations> {
+  const { names, dof, hamiltonian } = parsed;
+  const state = new Set(names);
+  const partials = new Partials(math, hamiltonian, names);
+  const tidy = new Tidy(math, (name) => state.has(name));
+  const rates: HamiltonEquations['rates'] = [];
+  for (let i = 0; i < names.length; i++) {
     const conjugate = i < dof ? names[i + dof] : names[i - dof];
-    return { node: differentiate(math, hamiltonian, conjugate), negate: i >= dof };
-  });
+    rates.push({ node: tidy.tidy(partials.of(conjugate)), negate: i >= dof });
+    await tracker?.step();
+  }
+  const readable = rates.map(({ node, negate }) => (negate ? tidy.negated(node) : node));
+  return { rates, readable };
+}
+
+/** The stepper, the two evaluators and the LaTeX, from H and its equations. */
+export function generateCode(parsed: ParsedHamiltonian, equations: HamiltonEquations): CompiledExpression {
+  const { names, paramNames, hamiltonian, dof } = parsed;
+  const { rates } = equations;
   const model: RateExpressions = { names, paramNames, rates };
   return {
     names,
@@ -49,7 +107,7 @@ export async function compileExpression(spec: ExpressionSpec): Promise<CompiledE
       field: evaluatorSource(model, rates, 'vector'),
       hamiltonian: evaluatorSource(model, [{ node: hamiltonian, negate: false }], 'scalar'),
     },
-    latex: latexOf(math, hamiltonian, rates, names, dof),
+    latex: latexOf(hamiltonian, equations, names, dof),
   };
 }
 
@@ -102,12 +160,4 @@ function prepare(
     }
     return n;
   });
-}
-
-function differentiate(math: MathJs, node: MathNode, name: string): MathNode {
-  try {
-    return math.derivative(node, name);
-  } catch (error) {
-    throw new InputError(`cannot differentiate H with respect to ${name}: ${(error as Error).message}`);
-  }
 }

@@ -14,6 +14,12 @@ export class Emitter {
   /** `const` declarations, in dependency order. */
   readonly temps: string[] = [];
   private readonly byCode = new Map<string, string>();
+  /**
+   * Code of each node already emitted. A derivative tree may share a subtree
+   * between places (mathjs reuses nodes), and would otherwise be walked once
+   * per place; the code is the same each time, so it is looked up instead.
+   */
+  private readonly byNode = new Map<MathNode, string>();
 
   /**
    * @param symbol maps a symbol name to the JS expression that reads it
@@ -27,6 +33,12 @@ export class Emitter {
   ) {}
 
   emit(node: MathNode): string {
+    let code = this.byNode.get(node);
+    if (code === undefined) this.byNode.set(node, (code = this.code(node)));
+    return code;
+  }
+
+  private code(node: MathNode): string {
     const name = this.hoisted(node);
     if (name !== undefined) return name;
     switch (node.type) {

@@ -1,6 +1,7 @@
 import type { MathNode } from 'mathjs';
 import { Emitter } from './emit.ts';
 import { CONSTANTS } from './names.ts';
+import { bottomUp, childrenOf } from './tree.ts';
 
 /**
  * What the generated code needs to know about a model: the state names, the
@@ -34,60 +35,86 @@ function stateFree(model: RateExpressions) {
   return (name: string) => !state.has(name);
 }
 
+/** The subexpressions of the rates that depend on time alone, and where each occurs. */
+export interface TimeTerms {
+  /** One node per distinct term (by its text). */
+  nodes: MathNode[];
+  /** Every occurrence of a term in the rates, to the index of its term in `nodes`. */
+  at: Map<MathNode, number>;
+}
+
 /**
  * The largest subexpressions of the rates that depend on time (and
  * parameters and constants) but not on the state, e.g. cos(γt) in the
- * paper's default model, keyed by their text. The stepper computes each once
- * per distinct stage time, and carries the values at the end of a step to
- * the start of the next: RK 3/8's fourth stage is evaluated at t + Δt, the
- * next step's first stage time, so one of its four evaluations per step is
- * free. On the default model (8 cosines per step) that is about a fifth of
- * the time.
+ * paper's default model. The stepper computes each once per distinct stage
+ * time, and carries the values at the end of a step to the start of the
+ * next: RK 3/8's fourth stage is evaluated at t + Δt, the next step's first
+ * stage time, so one of its four evaluations per step is free. On the
+ * default model (8 cosines per step) that is about a fifth of the time.
+ *
+ * What each node depends on is found bottom-up, once per node, so the search
+ * is linear in the size of the rates (a top-down test of every subtree was
+ * quadratic in their depth).
  */
-export function timeTerms(model: RateExpressions): MathNode[] {
-  const free = stateFree(model);
-  const terms = new Map<string, MathNode>();
-  const visit = (node: MathNode): void => {
-    if (dependsOnTimeAlone(node, free)) {
-      const key = node.toString();
-      if (!terms.has(key)) terms.set(key, node);
-      return;
+export function timeTerms(model: RateExpressions): TimeTerms {
+  const dependence = dependenceOf(stateFree(model));
+  const byText = new Map<string, number>();
+  const nodes: MathNode[] = [];
+  const at = new Map<MathNode, number>();
+  const seen = new Set<MathNode>();
+  // Top-down, stopping at each term found; a stack, for rates thousands of nodes deep (tree.ts).
+  const stack = model.rates.map(({ node }) => node).reverse();
+  while (stack.length) {
+    const node = stack.pop()!;
+    if (seen.has(node)) continue;
+    seen.add(node);
+    const { time, state } = dependence(node);
+    if (time && !state && node.type !== 'SymbolNode' && node.type !== 'ParenthesisNode') {
+      const text = node.toString();
+      let j = byText.get(text);
+      if (j === undefined) {
+        byText.set(text, (j = nodes.length));
+        nodes.push(node);
+      }
+      at.set(node, j);
+      continue;
     }
-    node.forEach((child: MathNode) => visit(child));
-  };
-  for (const { node } of model.rates) visit(node);
-  return [...terms.values()];
+    stack.push(...[...childrenOf(node)].reverse());
+  }
+  return { nodes, at };
 }
 
-/** A node other than a bare symbol or number whose symbols are time, parameters or constants, time among them. */
-function dependsOnTimeAlone(node: MathNode, free: (name: string) => boolean): boolean {
-  if (node.type === 'SymbolNode' || node.type === 'ConstantNode' || node.type === 'ParenthesisNode') return false;
-  let time = false;
-  let state = false;
-  node.traverse((n: MathNode, path: string) => {
-    if (n.type !== 'SymbolNode' || path === 'fn') return;
-    const name = (n as unknown as { name: string }).name;
-    if (name === 't') time = true;
-    else if (!free(name)) state = true;
-  });
-  return time && !state;
+interface Dependence {
+  time: boolean;
+  state: boolean;
+}
+
+/** Whether a node depends on time and whether on the state, found bottom-up and kept per node. */
+function dependenceOf(free: (name: string) => boolean): (node: MathNode) => Dependence {
+  const known = new Map<MathNode, Dependence>();
+  return (node) =>
+    bottomUp(node, known, (n, children) => {
+      if (n.type !== 'SymbolNode') return { time: children.some((c) => c.time), state: children.some((c) => c.state) };
+      const name = (n as unknown as { name: string }).name;
+      return { time: name === 't', state: name !== 't' && !free(name) };
+    });
 }
 
 /** The code computing the time terms at `$time`, into `$<label>T0…`. */
-function timeTermCode(model: RateExpressions, terms: readonly MathNode[], label: string): string[] {
+function timeTermCode(model: RateExpressions, terms: TimeTerms, label: string): string[] {
   const emitter = new Emitter(
     symbolReader(model, () => {
       throw new Error('a time term read the state');
     }),
     `$${label}u`,
   );
-  const values = terms.map((node) => emitter.emit(node));
+  const values = terms.nodes.map((node) => emitter.emit(node));
   return [...emitter.temps, ...values.map((code, j) => `const $${label}T${j} = ${code};`)];
 }
 
 function stage(
   model: RateExpressions,
-  terms: readonly MathNode[],
+  terms: TimeTerms,
   label: string,
   time: string,
   state: (i: number) => string,
@@ -96,10 +123,10 @@ function stage(
   const lines = [`{`, `const $time = ${time};`, ...timeCode];
   const locals = model.names.map((_, i) => `$s${i}`);
   lines.push(`const ${locals.map((l, i) => `${l} = ${state(i)}`).join(', ')};`);
-  const byKey = new Map(terms.map((node, j) => [node.toString(), `$${label}T${j}`]));
-  const emitter = new Emitter(symbolReader(model, (i) => locals[i]), `$${label}t`, (node) =>
-    node.type === 'SymbolNode' || node.type === 'ConstantNode' ? undefined : byKey.get(node.toString()),
-  );
+  const emitter = new Emitter(symbolReader(model, (i) => locals[i]), `$${label}t`, (node) => {
+    const j = terms.at.get(node);
+    return j === undefined ? undefined : `$${label}T${j}`;
+  });
   const rates = model.rates.map(({ node, negate }) => {
     const code = emitter.emit(node);
     return negate ? `(-${code})` : code;
@@ -107,7 +134,7 @@ function stage(
   lines.push(...emitter.temps);
   rates.forEach((code, i) => lines.push(`$${label}${i} = ${code};`));
   // The fourth stage's time terms are the next step's first: carry them over.
-  if (label === 'd') terms.forEach((_, j) => lines.push(`$carry${j} = $dT${j};`));
+  if (label === 'd') terms.nodes.forEach((_, j) => lines.push(`$carry${j} = $dT${j};`));
   lines.push('}');
   return lines.join('\n');
 }
@@ -134,17 +161,17 @@ export function fusedStepperSource(model: RateExpressions): string {
   out.push(`for (let $m = 0; $m < $count; $m++) {`);
   out.push(`const $o = $m * ${dim};`);
   out.push(`let ${idx.map((i) => `${y(i)} = $x[$o + ${i}]`).join(', ')};`);
-  if (terms.length) {
+  if (terms.nodes.length) {
     // The first step's first-stage time terms; every later step gets them from the step before.
-    out.push(`let ${terms.map((_, j) => `$carry${j}`).join(', ')};`);
+    out.push(`let ${terms.nodes.map((_, j) => `$carry${j}`).join(', ')};`);
     out.push(`{`, `const $time = $t0 + $k0 * $dt;`, ...timeTermCode(model, terms, 'i'));
-    terms.forEach((_, j) => out.push(`$carry${j} = $iT${j};`));
+    terms.nodes.forEach((_, j) => out.push(`$carry${j} = $iT${j};`));
     out.push(`}`);
   }
   out.push(`for (let $k = 0; $k < $steps; $k++) {`);
   out.push(`const $tk = $t0 + ($k0 + $k) * $dt;`);
   out.push(decl('a'), decl('b'), decl('c'), decl('d'));
-  const carried = terms.map((_, j) => `const $aT${j} = $carry${j};`);
+  const carried = terms.nodes.map((_, j) => `const $aT${j} = $carry${j};`);
   out.push(stage(model, terms, 'a', '$tk', y, carried));
   out.push(stage(model, terms, 'b', '$tk + $h3', (i) => `${y(i)} + $h3 * $a${i}`, timeTermCode(model, terms, 'b')));
   out.push(stage(model, terms, 'c', '$tk + 2 * $h3', (i) => `${y(i)} + $dt * ($b${i} - $a${i} / 3)`, timeTermCode(model, terms, 'c')));

@@ -1,5 +1,5 @@
 import type { MathNode } from 'mathjs';
-import type { MathJs } from './mathjs.ts';
+import type { HamiltonEquations } from './compile.ts';
 
 const GREEK = new Set(
   'alpha beta gamma delta epsilon zeta eta theta iota kappa lambda mu nu xi pi rho sigma tau upsilon phi chi psi omega Gamma Delta Theta Lambda Xi Pi Sigma Upsilon Phi Psi Omega'.split(
@@ -18,34 +18,49 @@ export function symbolTex(name: string, dot = false): string {
 }
 
 function toTex(node: MathNode): string {
-  return node.toTex({
+  const options = {
     parenthesis: 'auto',
     implicit: 'hide',
-    // The leading space keeps `\cdot` from running into the name (`\cdotp` is another command).
-    handler: (n: MathNode) =>
-      n.type === 'SymbolNode' ? ` ${symbolTex((n as unknown as { name: string }).name)}` : undefined,
-  } as never);
+    handler: (n: MathNode): string | undefined => {
+      // The leading space keeps `\cdot` from running into the name (`\cdotp` is another command).
+      if (n.type === 'SymbolNode') return ` ${symbolTex((n as unknown as { name: string }).name)}`;
+      // −(ω₀² sin q) reads as −ω₀² sin q: a minus before a product needs no parentheses.
+      const operand = negatedOperand(n);
+      if (operand) return `-${operand.toTex(options as never)}`;
+      return undefined;
+    },
+  };
+  return node.toTex(options as never);
+}
+
+/** The operand of a unary minus that can be written without parentheses: a product, quotient, power, call, name or number. */
+function negatedOperand(node: MathNode): MathNode | undefined {
+  if (node.type !== 'OperatorNode') return undefined;
+  const { fn, args } = node as unknown as { fn: string; args: MathNode[] };
+  if (fn !== 'unaryMinus') return undefined;
+  const operand = args[0];
+  if (operand.type === 'OperatorNode') {
+    const inner = (operand as unknown as { fn: string }).fn;
+    return inner === 'multiply' || inner === 'divide' || inner === 'pow' ? operand : undefined;
+  }
+  return operand.type === 'FunctionNode' || operand.type === 'SymbolNode' || operand.type === 'ConstantNode' ? operand : undefined;
 }
 
 /**
  * LaTeX of H and of Hamilton's equations q̇ = ∂H/∂p, ṗ = −∂H/∂q, for the
  * chapters to typeset. The right-hand sides are the derivatives the stepper
- * integrates, simplified once more for reading.
+ * integrates, with the minus of ṗ worked in for reading.
  */
 export function latexOf(
-  math: MathJs,
   hamiltonian: MathNode,
-  rates: readonly { node: MathNode; negate: boolean }[],
+  equations: HamiltonEquations,
   names: readonly string[],
   dof: number,
 ): { hamiltonian: string; equations: string[] } {
-  const equations = names.map((name, i) => {
+  const lines = names.map((name, i) => {
     const conjugate = i < dof ? names[i + dof] : names[i - dof];
-    const partial = `${rates[i].negate ? '-' : ''}\\frac{\\partial H}{\\partial ${symbolTex(conjugate)}}`;
-    const rate = rates[i].negate
-      ? math.simplify(new math.OperatorNode('-', 'unaryMinus', [rates[i].node]))
-      : rates[i].node;
-    return `${symbolTex(name, true)} = ${partial} = ${toTex(rate)}`;
+    const partial = `${equations.rates[i].negate ? '-' : ''}\\frac{\\partial H}{\\partial ${symbolTex(conjugate)}}`;
+    return `${symbolTex(name, true)} = ${partial} = ${toTex(equations.readable[i])}`;
   });
-  return { hamiltonian: `H = ${toTex(hamiltonian)}`, equations };
+  return { hamiltonian: `H = ${toTex(hamiltonian)}`, equations: lines };
 }
