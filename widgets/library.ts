@@ -33,7 +33,6 @@ export function prefetchWidgets(cell: Element): void {
 
 export function createLibrary(page: PageContext): Record<string, unknown> {
   // The core's modules one by one, not its index: a page then loads only the parts its cells use.
-  const simulation = () => import('./core/simulation.ts');
   const spectrum = () => import('./core/spectrum.ts');
   const invariants = () => import('./core/invariants.ts');
   const analysis = () => import('./book/analysis.ts');
@@ -64,7 +63,7 @@ export function createLibrary(page: PageContext): Record<string, unknown> {
       import('./core/canonical-equations.ts').then((m) => (spec: Parameters<typeof m.canonicalEquations>[0]) => m.canonicalEquations(spec, build)),
     ),
     /** new Simulation(model, {initial, dt, every, derived}): integrate off-screen, e.g. for a theory check */
-    Simulation: lazy(() => simulation().then((m) => m.Simulation)),
+    Simulation: lazy(() => import('./book/cell-simulation.ts').then((m) => m.CellSimulation)),
     spectrum: lazy(() => spectrum().then((m) => m.spectrum)),
     findPeaks: lazy(() => spectrum().then((m) => m.findPeaks)),
     relativeDrift: lazy(() => invariants().then((m) => m.relativeDrift)),

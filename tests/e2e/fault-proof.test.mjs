@@ -244,3 +244,35 @@ test('two tabs: each hears of the other’s edit, and neither overwrites newer w
   await a.page.close();
   await b.close();
 });
+
+test('dt = 1e-9 makes the theory checks fail within seconds, saying why, instead of computing for hours', async () => {
+  const { page, problems } = await openChapter(site, '/introduction/');
+  await typeIntoCell(page, 'dt', 'dt = 1e-9');
+  const line = await waitForError(page, 'driveLine', /steps/, 60_000);
+  assert.match(line, /more than the 1e\+7 \(about a second of integration\) the book lets one cell compute: take a larger dt \(now 1e-9\)/);
+  // Back to the default step, the checks agree again.
+  await typeIntoCell(page, 'dt', 'dt = 5e-4');
+  await page.waitForFunction(() => document.querySelector('[data-cell="driveLine"] [data-cell-error]')?.hidden === true, null, { timeout: 60_000 });
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('options beyond the book’s bounds are refused with one line under the cell', async () => {
+  const { page, problems } = await openChapter(site, '/playground/');
+  for (const [options, message] of [
+    ["({dt: 5e-4, speed: 1e308, views: ['time']})", /speed = 1e\+308 is above the largest the book allows, 100000 time units per second/],
+    ["({dt: 1e-12, speed: 1, views: ['time']})", /dt = 1e-12 is below the smallest the book allows, 1e-9/],
+  ]) {
+    await typeIntoCell(page, 'options', `options = ${options}`);
+    assert.match(await waitForError(page, 'sim', /allows/), message);
+  }
+  await typeIntoCell(page, 'options', "options = ({dt: 5e-4, speed: 1, views: ['time']})");
+  await page.waitForSelector(`${SIM}[data-ready]`);
+  // The widget's own dt field keeps its bound too.
+  const field = page.locator(`${SIM} input[aria-label="Time step dt"]`);
+  await field.fill('1e-12');
+  await field.press('Enter');
+  assert.match((await page.locator(`${SIM} .pb-field-message`).first().textContent()) ?? '', /too small; use at least 1e-9/);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
