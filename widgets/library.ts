@@ -15,6 +15,8 @@
  */
 import type { PageContext } from './book/page-data.ts';
 import { lazy } from './cells/lazy-builtin.ts';
+import { currentCellSignal } from './cells/runtime.ts';
+import type { BuildOptions } from './core/canonical-equations.ts';
 import { VIEW_MODULES } from './simulator/view-modules.ts';
 
 /**
@@ -37,12 +39,18 @@ export function createLibrary(page: PageContext): Record<string, unknown> {
   const invariants = () => import('./core/invariants.ts');
   const analysis = () => import('./book/analysis.ts');
   const typesetting = () => import('./book/tex.ts').then((m) => m.typesetting(page.typeset));
-  const build = { store: page.models };
+  // New models compile in a worker (book/compile-worker.ts), reporting progress; an edit that supersedes the cell cancels its build.
+  const build = (): BuildOptions => ({
+    store: page.models,
+    signal: currentCellSignal(),
+    progress: (done, total) => document.dispatchEvent(new CustomEvent('phasebook:compiling', { detail: { fraction: done / total } })),
+    compile: (spec, control) => import('./book/compile-client.ts').then((m) => m.compileInWorker(spec, control)),
+  });
 
   return {
     // Widgets
     /** simulator({hamiltonian, initial, …}) → Promise of the widget's element */
-    simulator: lazy(() => import('./simulator/simulator.ts').then((m) => (options: Parameters<typeof m.simulator>[0]) => m.simulator(options, build))),
+    simulator: lazy(() => import('./simulator/simulator.ts').then((m) => (options: Parameters<typeof m.simulator>[0]) => m.simulator(options, build()))),
     /** Views (each has an `.element`), for composing a simulator by hand */
     timePlot: lazy(() => import('./plots/time-plot.ts').then((m) => m.timePlot)),
     trajectoryView: lazy(() => import('./plots/trajectory-view.ts').then((m) => m.trajectoryView)),
@@ -55,12 +63,12 @@ export function createLibrary(page: PageContext): Record<string, unknown> {
     /** tex(source, {display}) → typeset LaTeX */
     tex: lazy(() => typesetting().then((t) => t.tex)),
     /** stabilityChart({hamiltonian, params, x, y, frequencyParam, boundaries, onSelect}) → Floquet chart computed in a worker */
-    stabilityChart: lazy(() => import('./book/stability-chart.ts').then((m) => (options: Parameters<typeof m.stabilityChart>[0]) => m.stabilityChart(options, build))),
+    stabilityChart: lazy(() => import('./book/stability-chart.ts').then((m) => (options: Parameters<typeof m.stabilityChart>[0]) => m.stabilityChart(options, build()))),
 
     // The simulation core
     /** canonicalEquations({dof, hamiltonian, params}) → Promise of a Model */
     canonicalEquations: lazy(() =>
-      import('./core/canonical-equations.ts').then((m) => (spec: Parameters<typeof m.canonicalEquations>[0]) => m.canonicalEquations(spec, build)),
+      import('./core/canonical-equations.ts').then((m) => (spec: Parameters<typeof m.canonicalEquations>[0]) => m.canonicalEquations(spec, build())),
     ),
     /** new Simulation(model, {initial, dt, every, derived}): integrate off-screen, e.g. for a theory check */
     Simulation: lazy(() => import('./book/cell-simulation.ts').then((m) => m.CellSimulation)),

@@ -276,3 +276,43 @@ test('options beyond the book’s bounds are refused with one line under the cel
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('an H that takes 5 ms a call keeps the page answering: no task longer than a few steps of it', async () => {
+  const { page, problems } = await openChapter(site, '/playground/');
+  await page.evaluate(() => {
+    window.__longest = 0;
+    new PerformanceObserver((list) => {
+      for (const entry of list.getEntries()) window.__longest = Math.max(window.__longest, entry.duration);
+    }).observe({ type: 'longtask' });
+  });
+  // Opaque to the translator (it reads the clock), so 5-point differences: 32 calls, 160 ms, per RK 3/8 step.
+  await typeIntoCell(page, 'H', 'H = (t, [q, p]) => {\n  const end = performance.now() + 5;\n  while (performance.now() < end) {}\n  return p * p / 2 + q * q / 2;\n}');
+  await page.waitForFunction((selector) => document.querySelector(selector)?.simulator?.model?.route === 'js-stencil', SIM, { timeout: 30_000 });
+  await page.waitForTimeout(2000);
+  // Input lag, as the page itself sees it: how late a zero timeout runs, sampled for two seconds.
+  const lateness = await page.evaluate(
+    () =>
+      new Promise((done) => {
+        let worst = 0;
+        const until = performance.now() + 2000;
+        const probe = () => {
+          const asked = performance.now();
+          setTimeout(() => {
+            worst = Math.max(worst, performance.now() - asked);
+            if (performance.now() < until) probe();
+            else done(worst);
+          }, 0);
+        };
+        probe();
+      }),
+  );
+  const longest = await page.evaluate(() => window.__longest);
+  // One step is 160 ms; a frame that committed to the old first chunk of 16 steps took 2.6 s, and lag grew to 6.5 s.
+  assert.ok(longest < 1000, `the longest task took ${Math.round(longest)} ms`);
+  assert.ok(lateness < 1000, `a zero timeout ran up to ${Math.round(lateness)} ms late`);
+  // And the page still answers a cell.
+  await typeIntoCell(page, 'H0', 'H0 = 1 + 1');
+  await waitForOutput(page, 'H0', (text) => text === 'H0 = 2', 20_000);
+  assert.deepEqual(problems, []);
+  await page.close();
+});

@@ -94,7 +94,7 @@ export class LiveCell {
       },
     });
     this.#listen();
-    document.addEventListener('phasebook:compiling', () => view.showCompiling());
+    document.addEventListener('phasebook:compiling', (event) => view.showCompiling((event as CustomEvent<{ fraction?: number } | null>).detail?.fraction));
   }
 
   /** The cell's id on the page (its name, or `cell-N`). */

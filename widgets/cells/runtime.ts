@@ -22,6 +22,19 @@ class Superseded extends Error {
   override name = 'Superseded';
 }
 
+/** The signal of the cell whose code is running right now (synchronously), if any. */
+let running: AbortSignal | undefined;
+
+/**
+ * The signal that aborts when the cell now running is defined again: work a
+ * cell starts (a model build, say) can take it, so that an edit making the
+ * work obsolete also stops it. Only known while the cell's code runs
+ * synchronously, which is when a cell calls such a function.
+ */
+export function currentCellSignal(): AbortSignal | undefined {
+  return running;
+}
+
 /** Rejects with {@link Superseded} when `signal` aborts. */
 function whenAborted(signal: AbortSignal): Promise<never> {
   return new Promise((_, reject) => signal.addEventListener('abort', () => reject(new Superseded('redefined')), { once: true }));
@@ -35,7 +48,14 @@ function whenAborted(signal: AbortSignal): Promise<never> {
  */
 function supersedable(definition: CellDefinition, signal: AbortSignal): CellDefinition {
   return ((...inputs: never[]) => {
-    const value = definition(...inputs);
+    const outer = running;
+    running = signal;
+    let value: unknown;
+    try {
+      value = definition(...inputs);
+    } finally {
+      running = outer;
+    }
     if (value instanceof Promise) return Promise.race([value, whenAborted(signal)]);
     if (typeof value === 'object' && value !== null && Symbol.asyncIterator in value) {
       const iterator = value as unknown as AsyncIterator<unknown>;

@@ -100,9 +100,11 @@ export class CellView {
     else this.#setActivity('');
   }
 
-  /** A model is being compiled for the page: a pending cell is waiting for it. */
-  showCompiling(): void {
-    if (this.root.dataset.cellState === 'pending') this.#setActivity('compiling…');
+  /** A model is being compiled for the page (`fraction` done, when known): a pending cell is waiting for it. */
+  showCompiling(fraction?: number): void {
+    if (this.root.dataset.cellState !== 'pending') return;
+    const done = fraction !== undefined && fraction > 0 && fraction < 1 ? ` ${Math.round(fraction * 100)}%` : '';
+    this.#setActivity(`compiling…${done}`);
   }
 
   #setActivity(text: string): void {

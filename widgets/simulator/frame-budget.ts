@@ -19,7 +19,7 @@ export interface Budget {
 
 export const DEFAULT_BUDGET: Budget = { frameMs: 6, chunkMs: 1, maxElapsedMs: 100 };
 
-/** Steps of the first chunk, before any cost is known. */
+/** Steps of the first chunk, once a single probe step (see integrateFrame) was too quick to time. */
 export const FIRST_CHUNK = 16;
 
 /** Steps owed at the start of a frame: what was carried plus speed · elapsed / dt. */
@@ -77,6 +77,16 @@ export function integrateFrame(
   let steps = 0;
   let now = start;
   let cost = costMs;
+  if (!(cost > 0) && owed >= 1) {
+    // Before any cost is known, one step is timed before a chunk is committed to: a model whose H is an opaque
+    // JavaScript function may take milliseconds per call and tens of calls per step (16 steps of a 5 ms H took 7.5 s).
+    const taken = run(1);
+    const after = clock();
+    if (after - now > CLOCK_FLOOR_MS) cost = (after - now) / Math.max(1, taken);
+    now = after;
+    steps += taken;
+    if (taken < 1) return { steps, ms: now - start, outOfBudget: false, costMs: cost };
+  }
   for (let chunks = 0; chunks < 10_000; chunks++) {
     const left = budget.frameMs - (now - start);
     const n = chunkSteps(cost, owed - steps, left);

@@ -90,4 +90,17 @@ describe('simulator/frame-budget', () => {
     expect(work.steps).toBe(500);
     expect(model.steps).toBe(500);
   });
+
+  it('integrateFrame(…) times one step before committing to a chunk: a 160 ms step costs its first frame one step, not sixteen', () => {
+    // A JS H of 5 ms per call under the 5-point stencil: 32 calls per RK 3/8 step of one degree of freedom.
+    const model = fakeModel(160);
+    const start = model.clock();
+    const work = integrateFrame(model.run, 1667, NaN, model.clock);
+    expect(work.steps).toBe(1);
+    expect(model.clock() - start).toBe(160);
+    expect(work.costMs).toBe(160);
+    // And the next frame, knowing the cost, still takes one step only.
+    const next = integrateFrame(model.run, 1667, work.costMs, model.clock);
+    expect(next.steps).toBe(1);
+  });
 });
