@@ -1,7 +1,7 @@
 import type { Simulation } from '../core/simulation.ts';
 import type { View } from '../simulator/view.ts';
 import type { AxisKind } from './extent.ts';
-import { axisTitle, phasePairs, toExtent, tracksOf, type ExtentOption, type Pair } from './plane-columns.ts';
+import { axisTitle, batchTitle, phasePairs, toExtent, tracksOf, type ExtentOption, type Pair } from './plane-columns.ts';
 import type { PanelSpec } from './plane-panels.ts';
 import { PlaneView, type PlaneStyle } from './plane-view.ts';
 import { heightAt, PHASE_MULTIPLE, PHASE_PANEL } from './sizes.ts';
@@ -52,7 +52,7 @@ export function phasePortrait(options: PhasePortraitOptions = {}): View {
       const base = { xKind: options.scale ?? 'linear', yKind: options.scale ?? 'linear', constant, equal: options.equal ?? false, extent, limit };
       const label = (pair: Pair, i: number) => options.labels?.[i] ?? pair.join(', ');
       const tracks = (pair: Pair, i: number) => tracksOf(simulation.record.columns, pair, simulation.count, () => i);
-      const title = batchTitle(simulation);
+      const title = batchTitle(simulation.count);
       if (multiples) {
         return pairs.map((pair, i): PanelSpec => ({
           ...base,
@@ -77,6 +77,3 @@ export function phasePortrait(options: PhasePortraitOptions = {}): View {
   });
 }
 
-function batchTitle(simulation: Simulation): string | undefined {
-  return simulation.count > 1 ? `${simulation.count} trajectories` : undefined;
-}

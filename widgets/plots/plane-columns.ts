@@ -1,5 +1,6 @@
 import type { Extent } from './extent.ts';
 import type { Track } from './plane-panels.ts';
+import { spread } from './series.ts';
 
 /** A pair of record series drawn as (x, y): state names such as 'q0', or exact columns such as 'q0[3]'. */
 export type Pair = readonly [string, string];
@@ -21,14 +22,36 @@ export function toExtent(option: ExtentOption | undefined, what: string): Extent
 }
 
 /**
- * The record columns a series name stands for: the column of that exact
- * name, or, in a batch of `count` trajectories, `name[j]` for every j.
+ * Most trajectories of a batch a plane view draws: the paper's 1000-particle
+ * beam in full; of a larger batch an evenly spread sample, which the view
+ * says it shows (finding, tracing and fading 100 000 tracks took minutes).
  */
-export function columnsOf(columns: readonly string[], name: string, count: number): number[] {
-  const exact = columns.indexOf(name);
+export const MAX_PLANE_TRACKS = 2000;
+
+/** Column positions by name, built once per record layout: looking each of 10⁵ names up in a list of 3·10⁵ was quadratic. */
+const indexes = new WeakMap<readonly string[], Map<string, number>>();
+
+function indexOf(columns: readonly string[], name: string): number {
+  let index = indexes.get(columns);
+  if (!index) indexes.set(columns, (index = new Map(columns.map((c, i) => [c, i]))));
+  return index.get(name) ?? -1;
+}
+
+/** The trajectories a plane view draws of a batch of `count`: all, or an even sample of MAX_PLANE_TRACKS. */
+export function drawnTrajectories(count: number): number[] {
+  return [...spread(count, MAX_PLANE_TRACKS)].sort((a, b) => a - b);
+}
+
+/**
+ * The record columns a series name stands for: the column of that exact
+ * name, or, in a batch of `count` trajectories, `name[j]` for every j
+ * (for the trajectories `which`, by default all).
+ */
+export function columnsOf(columns: readonly string[], name: string, count: number, which?: readonly number[]): number[] {
+  const exact = indexOf(columns, name);
   if (exact > 0) return [exact];
   if (count > 1) {
-    const all = Array.from({ length: count }, (_, j) => columns.indexOf(`${name}[${j}]`));
+    const all = (which ?? Array.from({ length: count }, (_, j) => j)).map((j) => indexOf(columns, `${name}[${j}]`));
     if (all.every((c) => c > 0)) return all;
   }
   const shown = columns.slice(1, 9).join(', ') + (columns.length > 9 ? ', …' : '');
@@ -37,12 +60,20 @@ export function columnsOf(columns: readonly string[], name: string, count: numbe
 
 /** One track per trajectory for a pair: x and y columns matched trajectory by trajectory. */
 export function tracksOf(columns: readonly string[], pair: Pair, count: number, group: (j: number) => number): Track[] {
-  const xs = columnsOf(columns, pair[0], count);
-  const ys = columnsOf(columns, pair[1], count);
+  const which = count > 1 ? drawnTrajectories(count) : undefined;
+  const xs = columnsOf(columns, pair[0], count, which);
+  const ys = columnsOf(columns, pair[1], count, which);
   if (xs.length !== ys.length) {
     throw new Error(`“${pair[0]}” is ${xs.length} series and “${pair[1]}” is ${ys.length}; a pair needs as many of each`);
   }
-  return xs.map((x, j) => ({ x, y: ys[j], group: group(j) }));
+  return xs.map((x, k) => ({ x, y: ys[k], group: group(which ? which[k] : k) }));
+}
+
+/** A plane view's title for a batch: how many trajectories, and how many of them it draws. */
+export function batchTitle(count: number): string | undefined {
+  if (count <= 1) return undefined;
+  const drawn = Math.min(count, MAX_PLANE_TRACKS);
+  return drawn < count ? `${drawn.toLocaleString('en')} of ${count.toLocaleString('en')} trajectories shown` : `${count} trajectories`;
 }
 
 /**

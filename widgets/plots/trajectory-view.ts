@@ -1,6 +1,6 @@
 import type { Simulation } from '../core/simulation.ts';
 import type { View } from '../simulator/view.ts';
-import { axisTitle, defaultBodies, toExtent, tracksOf, type ExtentOption, type Pair } from './plane-columns.ts';
+import { axisTitle, batchTitle, defaultBodies, toExtent, tracksOf, type ExtentOption, type Pair } from './plane-columns.ts';
 import type { PanelSpec } from './plane-panels.ts';
 import { PlaneView, type PlaneStyle } from './plane-view.ts';
 import { heightAt, TRAJECTORY_PANEL } from './sizes.ts';
@@ -57,11 +57,10 @@ function trajectoryPanel(
   const byTrajectory = options.colorBy === 'trajectory' && count > 1;
   const tracks = bodies.flatMap((body, b) => tracksOf(columns, body, count, (j) => (byTrajectory ? j % 8 : b)));
   const legend = byTrajectory ? [] : bodies.map((body, b) => ({ label: options.labels?.[b] ?? body.join(', '), group: b }));
-  const trajectories = tracks.length / bodies.length;
   return {
     tracks,
     legend: bodies.length > 1 || options.labels ? legend : [],
-    title: trajectories > 1 ? `${trajectories} trajectories` : undefined,
+    title: batchTitle(count),
     xLabel: options.xLabel ?? axisTitle(bodies.map((b) => b[0]), 'x'),
     yLabel: options.yLabel ?? axisTitle(bodies.map((b) => b[1]), 'y'),
     xKind: 'linear',

@@ -62,3 +62,23 @@ describe('plane-columns', () => {
     expect(() => toExtent({ x: [1, 1], y: [0, 2] }, 'limit')).toThrow(/limit must be/);
   });
 });
+
+describe('a large batch: a plane view draws a stated, even sample of its trajectories', () => {
+  it('tracksOf picks MAX_PLANE_TRACKS evenly spread trajectories, first and last included, with their own groups', async () => {
+    const { tracksOf, MAX_PLANE_TRACKS, batchTitle } = await import('../../../widgets/plots/plane-columns.ts');
+    const count = 100_000;
+    const columns = ['t', ...Array.from({ length: count }, (_, j) => `q[${j}]`), ...Array.from({ length: count }, (_, j) => `p[${j}]`)];
+    const tracks = tracksOf(columns, ['q', 'p'], count, (j) => j);
+    expect(tracks).toHaveLength(MAX_PLANE_TRACKS);
+    expect(tracks[0]).toEqual({ x: 1, y: 1 + count, group: 0 });
+    expect(tracks.at(-1)).toEqual({ x: count, y: 2 * count, group: count - 1 });
+    // Evenly spread: no two neighbours farther apart than ⌈count / (MAX − 1)⌉.
+    const gaps = tracks.slice(1).map((t, k) => t.group - tracks[k].group);
+    expect(Math.max(...gaps)).toBeLessThanOrEqual(Math.ceil(count / (MAX_PLANE_TRACKS - 1)));
+    expect(batchTitle(count)).toBe('2,000 of 100,000 trajectories shown');
+    expect(batchTitle(30)).toBe('30 trajectories');
+    expect(batchTitle(1)).toBeUndefined();
+    // A batch within the bound is drawn whole.
+    expect(tracksOf(columns.slice(0, 1 + 10).concat(columns.slice(1 + count, 1 + count + 10)).map((c) => c.replace(/\[(\d+)\]/, '[$1]')), ['q', 'p'], 10, (j) => j)).toHaveLength(10);
+  });
+});
