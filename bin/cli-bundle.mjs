@@ -15,7 +15,7 @@
  * stat calls, well under a millisecond. esbuild's full metafile is kept as
  * metafile.json, for tests and for anyone asking what went where.
  */
-import { mkdirSync, readFileSync, renameSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, renameSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
@@ -23,6 +23,7 @@ import { fileURLToPath } from 'node:url';
 export const ROOT = fileURLToPath(new URL('..', import.meta.url));
 export const OUT_DIR = join(ROOT, 'build', 'cli');
 const ENTRY = 'widgets/cli/main.ts';
+const WORKER_ENTRY = 'widgets/cli/batch-worker.ts';
 /** Bumped when the manifest's layout changes, so an old one reads as stale. */
 const MANIFEST_FORMAT = 1;
 
@@ -80,7 +81,8 @@ export async function buildCli({ outDir = OUT_DIR, root = ROOT, clean = false } 
   const builtAt = Date.now() - 50;
   const result = await build({
     absWorkingDir: root,
-    entryPoints: [ENTRY],
+    // The worker threads of a dataset run load their own entry (widgets/cli/dataset-executors.ts).
+    entryPoints: [ENTRY, WORKER_ENTRY].filter((entry) => existsSync(join(root, entry))),
     outdir: outDir,
     bundle: true,
     splitting: true,

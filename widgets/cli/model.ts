@@ -2,12 +2,21 @@
  * The model of a `simulate` run: H through the core's compiler (with the
  * disk cache of compiled models unless --no-cache), or a vector field the
  * user wrote, with an optional H function for the H column.
+ *
+ * A model is made in two steps: a recipe (the compiled model as data, or the
+ * field's source), which may need mathjs and is made once, and the running
+ * model built from it, which needs no compiler. Every worker thread builds
+ * its model from the same recipe, so all run the same generated code: the
+ * numbers are the same whichever thread computes a trajectory.
  */
+import { compiledModelFor } from '../core/canonical-equations.ts';
 import { canonicalEquations } from '../core/canonical-equations.ts';
+import type { CompiledModel } from '../core/compiled-model.ts';
 import { InputError } from '../core/errors.ts';
 import { isFunctionSource } from '../core/js-function/compile.ts';
 import type { OpaqueHamiltonian } from '../core/js-function/stencil.ts';
-import type { Model, VectorField } from '../core/types.ts';
+import { modelFromCompiled } from '../core/model-from-compiled.ts';
+import type { Model, Stepper, VectorField } from '../core/types.ts';
 import { functionFromArgument } from './js-source.ts';
 import { diskModelStore, modelCacheDirectory } from './model-cache.ts';
 
@@ -18,57 +27,129 @@ export interface ModelArguments {
   hamiltonian?: string;
   /** --vector-field: JS function source writing dx/dt */
   vectorField?: string;
+  /** --coordinates and --momenta: names of the state other than q0…, p0… */
+  coordinates?: string[];
+  momenta?: string[];
   /** false for --no-cache */
   cache: boolean;
 }
 
+/** What a model is built from, as plain data that can be sent to a worker. */
+export type ModelRecipe =
+  | { kind: 'compiled'; compiled: CompiledModel; params: Record<string, number> }
+  | { kind: 'field'; dof: number; vectorField: string; hamiltonian?: string; params: Record<string, number>; coordinates?: string[]; momenta?: string[] };
+
 const FIELD_SHAPE = '(t, x, dxdt) => { dxdt[0] = …; … }';
 const H_SHAPE = '(t, x) => …';
 
-export async function simulationModel(args: ModelArguments): Promise<Model> {
-  const { dof, params } = args;
+/** The recipe of the model `args` describe: compiles H (or takes it from the cache) when there is one to compile. */
+export async function modelRecipe(args: ModelArguments): Promise<ModelRecipe> {
+  const { dof, params, coordinates, momenta } = args;
   if (args.vectorField === undefined) {
     if (args.hamiltonian === undefined) throw new InputError('give --hamiltonian H, or --vector-field with a JS function (t, x, dxdt) => { … }');
     const store = args.cache ? diskModelStore(modelCacheDirectory()) : undefined;
-    return canonicalEquations({ dof, hamiltonian: args.hamiltonian, params }, { store });
+    const compiled = await compiledModelFor({ dof, hamiltonian: args.hamiltonian, params, coordinates, momenta }, { store });
+    return { kind: 'compiled', compiled, params };
   }
-  const vectorField = functionFromArgument(args.vectorField, '--vector-field', FIELD_SHAPE, params) as VectorField;
-  let hamiltonian: OpaqueHamiltonian | undefined;
-  if (args.hamiltonian !== undefined) {
+  if (args.hamiltonian !== undefined && !isFunctionSource(args.hamiltonian)) {
     // Beside a vector field, H only fills the H column: a function evaluates it without compiling anything.
-    if (!isFunctionSource(args.hamiltonian)) {
-      throw new InputError(`with --vector-field, --hamiltonian must be a JS function ${H_SHAPE}, since it only fills the H column`);
-    }
-    hamiltonian = functionFromArgument(args.hamiltonian, '--hamiltonian', H_SHAPE, params) as OpaqueHamiltonian;
+    throw new InputError(`with --vector-field, --hamiltonian must be a JS function ${H_SHAPE}, since it only fills the H column`);
   }
-  return canonicalEquations({ dof, vectorField, hamiltonian, params });
+  return { kind: 'field', dof, vectorField: args.vectorField, hamiltonian: args.hamiltonian, params, coordinates, momenta };
+}
+
+/** The running model of a recipe; no compiler is loaded. */
+export async function modelFromRecipe(recipe: ModelRecipe): Promise<Model> {
+  if (recipe.kind === 'compiled') {
+    const model = modelFromCompiled(recipe.compiled, recipe.params, recipe.compiled.source);
+    return recipe.compiled.route === 'js-stencil' ? userCodeModel(model, 'H') : model;
+  }
+  const { params } = recipe;
+  const vectorField = functionFromArgument(recipe.vectorField, '--vector-field', FIELD_SHAPE, params) as VectorField;
+  const hamiltonian =
+    recipe.hamiltonian === undefined ? undefined : (functionFromArgument(recipe.hamiltonian, '--hamiltonian', H_SHAPE, params) as OpaqueHamiltonian);
+  const model = await canonicalEquations({ dof: recipe.dof, vectorField, hamiltonian, params, coordinates: recipe.coordinates, momenta: recipe.momenta });
+  return userCodeModel(model, 'the vector field');
 }
 
 /**
- * Evaluates the model once at the initial state, so that a name error in a
- * JS function, or a vector field that leaves a component unwritten, is
- * reported before any output.
+ * A model whose equations run the user's own JavaScript, made to report an
+ * exception thrown during the run as the user's (an InputError saying when
+ * and what), rather than as an internal error, and H returning anything but
+ * a number as such.
  */
-export function checkEvaluates(model: Model, initial: readonly number[]): void {
+function userCodeModel(model: Model, what: string): Model {
+  const fails = (when: string, error: unknown) => new InputError(`${what} fails ${when}: ${(error as Error)?.message ?? String(error)}`);
+  const advance: Stepper['advance'] = (x, count, params, t0, k0, dt, steps) => {
+    try {
+      return model.stepper.advance(x, count, params, t0, k0, dt, steps);
+    } catch (error) {
+      if (error instanceof InputError) throw error;
+      throw fails(`between t = ${t0 + k0 * dt} and t = ${t0 + (k0 + steps) * dt}`, error);
+    }
+  };
+  const h = model.hamiltonian;
+  return {
+    ...model,
+    stepper: { dim: model.dim, advance },
+    field: (t, x, dxdt) => {
+      try {
+        model.field(t, x, dxdt);
+      } catch (error) {
+        throw fails(`at t = ${t}`, error);
+      }
+    },
+    hamiltonian: h
+      ? (t, x, offset) => {
+          let value: unknown;
+          try {
+            value = h(t, x, offset);
+          } catch (error) {
+            throw new InputError(`H fails at t = ${t}: ${(error as Error)?.message ?? String(error)}`);
+          }
+          if (typeof value !== 'number') throw new InputError(`H must return a number, but returns ${describe(value)} at t = ${t}`);
+          return value;
+        }
+      : undefined,
+  };
+}
+
+function describe(value: unknown): string {
+  if (typeof value === 'string') return `the string ${JSON.stringify(value.length > 40 ? value.slice(0, 40) + '…' : value)}`;
+  if (value === null) return 'null';
+  if (Array.isArray(value)) return 'an array';
+  return typeof value === 'object' ? 'an object' : String(value) === 'undefined' ? 'undefined' : `a ${typeof value}`;
+}
+
+/**
+ * Evaluates the model once at an initial state, so that a name error in a
+ * JS function, H returning something other than a number, or a vector field
+ * that leaves a component unwritten, is reported before any output.
+ */
+export function checkEvaluates(model: Model, initial: ArrayLike<number>, t0 = 0): void {
   const x = Float64Array.from(initial);
   const rate = new Float64Array(model.dim);
   const field = model.route === 'vector-field';
+  let value: unknown;
   try {
-    model.hamiltonian?.(0, x, 0);
+    value = model.hamiltonian?.(t0, x, 0);
   } catch (error) {
-    throw new InputError(`H fails at t = 0: ${(error as Error).message}`);
+    if (error instanceof InputError) throw error;
+    throw new InputError(`H fails at t = ${t0}: ${(error as Error).message}`);
   }
+  if (model.hamiltonian && typeof value !== 'number') throw new InputError(`H must return a number, but returns ${describe(value)} at t = ${t0}`);
   rate.fill(NaN);
   try {
-    model.field(0, x, rate);
+    model.field(t0, x, rate);
   } catch (error) {
-    throw new InputError(`${field ? 'the vector field' : 'H'} fails at t = 0: ${(error as Error).message}`);
+    if (error instanceof InputError) throw error;
+    throw new InputError(`${field ? 'the vector field' : 'H'} fails at t = ${t0}: ${(error as Error).message}`);
   }
   // A Hamiltonian's NaN is the physics (bodies that meet) and is reported as a blow-up; a vector field's may be a component it forgot.
   const unset = field ? rate.findIndex((v) => !Number.isFinite(v)) : -1;
   if (unset >= 0) {
     throw new InputError(
-      `the vector field gives no finite dx/dt for ${model.names[unset]} (dxdt[${unset}]) at t = 0; it must write every component: ${FIELD_SHAPE}`,
+      `the vector field gives no finite dx/dt for ${model.names[unset]} (dxdt[${unset}]) at t = ${t0}; it must write every component: ${FIELD_SHAPE}`,
     );
   }
 }

@@ -9,7 +9,7 @@ const HEARTBEAT_MS = STALE_AFTER_MS / 24;
 
 /** Where the CLI writes: stdout, or a file that appears only when complete. */
 export interface Sink {
-  write(text: string): void;
+  write(data: string | Uint8Array): void;
   /** the output is complete: make it visible */
   commit(): void;
   /** something failed: leave nothing behind; never throws */
@@ -17,8 +17,8 @@ export interface Sink {
 }
 
 /** Writes all of `text`: a write may take only part of it (a disk filling up does that before it says ENOSPC). */
-function writeAll(fd: number, text: string): void {
-  const bytes = Buffer.from(text);
+function writeAll(fd: number, data: string | Uint8Array): void {
+  const bytes = typeof data === 'string' ? Buffer.from(data) : data;
   let offset = 0;
   while (offset < bytes.length) offset += writeSync(fd, bytes, offset);
 }
@@ -141,9 +141,9 @@ function partialSink(path: string, guard?: InterruptGuard): Sink {
 /** stdout, written synchronously so that rows keep their order and nothing is lost on exit. */
 export function stdoutSink(): Sink {
   return {
-    write: (text) => {
+    write: (data) => {
       let offset = 0;
-      const bytes = Buffer.from(text);
+      const bytes = typeof data === 'string' ? Buffer.from(data) : data;
       while (offset < bytes.length) {
         try {
           offset += writeSync(1, bytes, offset);

@@ -46,12 +46,12 @@ export function partialOwner(name: string): { space: string; pid: number } | und
   return match ? { space: match[1], pid: Number(match[2]) } : undefined;
 }
 
-/** Creates the partial for `target`, exclusively; returns its path and descriptor. */
-export function createPartial(target: string): { path: string; fd: number } {
+/** Creates the partial for `target`, exclusively; returns its path and descriptor ('wx+' to read it back too). */
+export function createPartial(target: string, flags: 'wx' | 'wx+' = 'wx'): { path: string; fd: number } {
   const path = join(dirname(target), partialName(target));
   // 'wx' is O_CREAT|O_EXCL: it never opens an existing file nor follows a link. The mode is a plain
   // file's (0666 less the umask), so the renamed output has the permissions any new file would.
-  const fd = openSync(path, 'wx', 0o666);
+  const fd = openSync(path, flags, 0o666);
   return { path, fd };
 }
 

@@ -79,3 +79,23 @@ export function checkRunSize(size: RunSize, force: boolean): void {
   const output = `about ${byteSize(size.bytes)} of output${tooBig ? ` (the limit is ${byteSize(OUTPUT_LIMIT)}; raise --every or lower --t-end)` : ''}`;
   throw new InputError(`this run would take ${steps} and write ${output}; add --force to run it anyway`);
 }
+
+export interface DatasetShapeForSize {
+  /** steps per trajectory */
+  steps: number;
+  samples: number;
+  trajectories: number;
+  /** numbers per sample, the trajectory's index included */
+  columns: number;
+  format: 'csv' | 'json' | 'npz' | 'parquet';
+}
+
+/**
+ * The steps and (estimated) bytes of a dataset run: text as runSize counts
+ * it, NPZ and Parquet at 8 bytes a number.
+ */
+export function datasetSize({ steps, samples, trajectories, columns, format }: DatasetShapeForSize): RunSize {
+  const rows = samples * trajectories;
+  const perRow = format === 'npz' || format === 'parquet' ? 8 * columns : columns * BYTES_PER_VALUE + (format === 'json' ? JSON_ROW_BYTES : 0);
+  return { steps: steps * trajectories, rows, bytes: rows * perRow + HEAD_BYTES };
+}

@@ -1,109 +1,224 @@
-import { csvHeader, csvRows } from '../core/csv.ts';
+/**
+ * `phasebook simulate`: one trajectory, or a dataset of many (listed, from a
+ * file, sampled in a box, on an energy surface, on a grid), written as CSV,
+ * JSON, NPZ or Parquet, on every core, or one shard of it.
+ */
+import { basename, extname } from 'node:path';
 import { InputError } from '../core/errors.ts';
-import { exportMeta } from '../core/export-meta.ts';
-import { jsonHead, jsonRows, jsonTail, type ExportMeta } from '../core/json.ts';
-import { DEFAULT_DT, Simulation } from '../core/simulation.ts';
-import { number, numberList, params, parseArgs, positive, wholeNumber } from './args.ts';
+import { stateNames } from '../core/expression/names.ts';
+import { MAX_SEED } from '../core/dataset/philox.ts';
+import { DEFAULT_DT } from '../core/simulation.ts';
+import { number, numberList, parseArgs, positive, wholeNumber } from './args.ts';
+import { defaultWorkers, executeRun, prepareRun, type PreparedRun } from './dataset-run.ts';
+import { datasetWriter } from './dataset-writer.ts';
+import { readInitialFile } from './initial-file.ts';
 import { Interrupted, InterruptGuard } from './interrupt.ts';
-import { checkEvaluates, simulationModel } from './model.ts';
 import { fileSink, stdoutSink, type Sink } from './output.ts';
-import { pacedRun } from './paced-run.ts';
-import { progressBar } from './progress.ts';
-import { checkRunSize, runSize } from './run-size.ts';
+import { parameters } from './parameters.ts';
+import { parseBox, parseGrid } from './ranges.ts';
+import type { Format, RunSpec, SetSpec } from './run-spec.ts';
 
 export const SIMULATE_USAGE = `phasebook simulate --hamiltonian H --dof N --initial v1,…,v2N [--param name=value]…
-                   [--dt 5e-4] [--t-end 10] [--every 1] [--format csv|json] [--output FILE] [--no-cache] [--force]
+                   [--dt 5e-4] [--t0 0] [--t-end 10] [--every 1 | --times t1,t2,…] [--derivatives]
+                   [--format csv|json|npz|parquet] [--layout long|wide] [--output FILE]
+                   [--coordinates x,y --momenta px,py] [--workers K] [--shard i/n] [--no-cache] [--force]
+    many trajectories instead of --initial:
+                   --initial-file FILE (.csv, .npy or .json, a row per trajectory)
+                   --sample N [--seed S] --box q=lo:hi,p=lo:hi [--energy E [--solve-for p]]
+                   --grid q=lo:hi:n,p=lo:hi:n
   phasebook simulate --vector-field '(t, x, dxdt) => { … }' [--hamiltonian '(t, x) => …'] --dof N …`;
 
-/** Rows the record holds between writes: enough to amortise a write, few enough to keep memory flat. */
-const ROWS_PER_BLOCK = 4096;
+const FORMATS: readonly Format[] = ['csv', 'json', 'npz', 'parquet'];
 
-export async function simulate(argv: readonly string[]): Promise<void> {
+export interface SimulateArguments {
+  spec: RunSpec;
+  output?: string;
+  workers: number;
+  cache: boolean;
+  force: boolean;
+}
+
+/** The format: --format, else the output's extension, else CSV. */
+function formatOf(given: string | undefined, output: string | undefined): Format {
+  if (given !== undefined) {
+    if (!FORMATS.includes(given as Format)) throw new InputError(`--format must be csv, json, npz or parquet, not "${given}"`);
+    return given as Format;
+  }
+  const ext = output === undefined ? '' : extname(output).slice(1).toLowerCase();
+  return FORMATS.includes(ext as Format) ? (ext as Format) : 'csv';
+}
+
+/** `i/n` with 1 ≤ i ≤ n. */
+function parseShard(text: string): { index: number; of: number } {
+  const m = /^\s*(-?\d+)\s*\/\s*(-?\d+)\s*$/.exec(text);
+  if (!m) throw new InputError(`--shard takes i/n (shard i of n, from 1/n to n/n), not "${text}"`);
+  const index = Number(m[1]);
+  const of = Number(m[2]);
+  if (!(of >= 1)) throw new InputError(`--shard ${text}: the number of shards must be at least 1`);
+  if (index < 1 || index > of) throw new InputError(`--shard ${text}: the shard number runs from 1 to ${of}`);
+  return { index, of };
+}
+
+export function parseSimulate(argv: readonly string[]): SimulateArguments {
   const args = parseArgs(argv, {
     hamiltonian: 'value',
     'vector-field': 'value',
     dof: 'value',
     initial: 'value',
+    'initial-file': 'value',
+    sample: 'value',
+    seed: 'value',
+    box: 'value',
+    energy: 'value',
+    'solve-for': 'value',
+    grid: 'value',
     param: 'list',
+    coordinates: 'value',
+    momenta: 'value',
     dt: 'value',
+    t0: 'value',
     't-end': 'value',
     every: 'value',
+    times: 'value',
+    derivatives: 'flag',
     format: 'value',
+    layout: 'value',
     output: 'value',
+    workers: 'value',
+    shard: 'value',
     'no-cache': 'flag',
     force: 'flag',
   });
+  const value = (name: string) => args.values.get(name);
   const required = (name: string) => {
-    const v = args.values.get(name);
+    const v = value(name);
     if (v === undefined) throw new InputError(`--${name} is required (usage: ${SIMULATE_USAGE.split('\n')[0]} …)`);
     return v;
   };
-  const hamiltonian = args.values.get('hamiltonian');
-  const vectorField = args.values.get('vector-field');
+  const hamiltonian = value('hamiltonian');
+  const vectorField = value('vector-field');
   if (hamiltonian === undefined && vectorField === undefined) required('hamiltonian');
   const dof = wholeNumber(required('dof'), '--dof');
-  const initial = numberList(required('initial'), '--initial');
-  const dt = positive(args.values.get('dt') ?? String(DEFAULT_DT), '--dt');
-  const tEnd = number(args.values.get('t-end') ?? '10', '--t-end');
-  if (tEnd < 0) throw new InputError(`--t-end must not be negative, not ${tEnd}`);
-  const every = wholeNumber(args.values.get('every') ?? '1', '--every');
-  const format = args.values.get('format') ?? 'csv';
-  if (format !== 'csv' && format !== 'json') throw new InputError(`--format must be csv or json, not "${format}"`);
-  const values = params(args.lists.get('param') ?? []);
-  if (initial.length !== 2 * dof) {
-    throw new InputError(`--initial has ${initial.length} values; ${dof} degree(s) of freedom need ${2 * dof} (q's then p's)`);
-  }
+  const list = (name: string) => value(name)?.split(',').map((s) => s.trim());
+  const coordinates = list('coordinates');
+  const momenta = list('momenta');
+  const { names } = stateNames(dof, coordinates, momenta);
+  const { values: params, expressions } = parameters(args.lists.get('param') ?? [], names);
 
-  const model = await simulationModel({ dof, hamiltonian, vectorField, params: values, cache: !args.flags.has('no-cache') });
-  checkEvaluates(model, initial);
-  const simulation = new Simulation(model, { initial, dt, every, capacity: ROWS_PER_BLOCK + 1 });
-  const size = runSize({ tEnd, dt, every, columns: simulation.record.width, format });
-  checkRunSize(size, args.flags.has('force'));
-  const meta = exportMeta(simulation);
-  if (vectorField !== undefined) {
-    // The field is what was integrated; H, when given, only fills its column.
-    meta.hamiltonian = hamiltonian ?? '';
-    meta.vectorField = vectorField;
+  const dt = positive(value('dt') ?? String(DEFAULT_DT), '--dt');
+  const t0 = number(value('t0') ?? '0', '--t0');
+  const timesText = value('times');
+  if (timesText !== undefined && (value('t-end') !== undefined || value('every') !== undefined)) {
+    throw new InputError('--times lists the output times: give it without --t-end and --every');
   }
-  const output = args.values.get('output');
+  const times = timesText === undefined ? undefined : numberList(timesText, '--times');
+  const tEnd = times ? times[times.length - 1] : number(value('t-end') ?? String(t0 + 10), '--t-end');
+  if (tEnd < t0) throw new InputError(value('t0') === undefined ? `--t-end must not be negative, not ${tEnd}` : `--t-end ${tEnd} is before --t0 ${t0}`);
+  const every = wholeNumber(value('every') ?? '1', '--every');
+
+  const output = value('output');
+  const format = formatOf(value('format'), output);
+  const layout = value('layout') ?? 'long';
+  if (layout !== 'long' && layout !== 'wide') throw new InputError(`--layout must be long or wide, not "${layout}"`);
+  if (value('layout') !== undefined && format !== 'parquet') throw new InputError('--layout applies to --format parquet only');
+
+  const set = setSpec(args.values, names, params);
+  const shardText = value('shard');
+  const shard = shardText === undefined ? undefined : parseShard(shardText);
+  const workersText = value('workers');
+  const workers = workersText === undefined ? defaultWorkers() : wholeNumber(workersText, '--workers');
+  const spec: RunSpec = {
+    hamiltonian,
+    vectorField,
+    dof,
+    params,
+    paramExpressions: Object.keys(expressions).length ? expressions : undefined,
+    coordinates,
+    momenta,
+    dt,
+    t0,
+    tEnd,
+    every,
+    times,
+    set,
+    derivatives: args.flags.has('derivatives'),
+    format,
+    layout,
+    shard,
+  };
+  return { spec, output, workers, cache: !args.flags.has('no-cache'), force: args.flags.has('force') };
+}
+
+/** The set of initial states, from whichever one of --initial, --initial-file, --sample and --grid is given. */
+function setSpec(values: Map<string, string>, names: readonly string[], params: Record<string, number>): SetSpec {
+  const modes = ['initial', 'initial-file', 'sample', 'grid'].filter((m) => values.has(m));
+  if (modes.length === 0) throw new InputError(`give the initial state: --initial v1,…,v${names.length}, or many with --initial-file, --sample or --grid`);
+  if (modes.length > 1) throw new InputError(`give one of --initial, --initial-file, --sample and --grid, not ${modes.map((m) => `--${m}`).join(' and ')}`);
+  const stray = (option: string, mode: string) => {
+    if (values.has(option)) throw new InputError(`--${option} goes with --${mode}`);
+  };
+  if (!values.has('sample')) ['seed', 'box', 'energy', 'solve-for'].forEach((o) => stray(o, 'sample'));
+  if (!values.has('energy')) stray('solve-for', 'energy');
+  const mode = modes[0];
+  if (mode === 'initial') {
+    const initial = numberList(values.get('initial')!, '--initial');
+    if (initial.length !== names.length) {
+      throw new InputError(`--initial has ${initial.length} values; ${names.length / 2} degree(s) of freedom need ${names.length} (q's then p's)`);
+    }
+    return { kind: 'given', values: initial };
+  }
+  if (mode === 'initial-file') {
+    const path = values.get('initial-file')!;
+    return { kind: 'given', values: readInitialFile(path, names), file: basename(path) };
+  }
+  if (mode === 'grid') return { kind: 'grid', axes: parseGrid(values.get('grid')!, names, params) };
+  const count = wholeNumber(values.get('sample')!, '--sample');
+  const seed = wholeNumber(values.get('seed') ?? '0', '--seed', 0);
+  if (seed > MAX_SEED) throw new InputError(`--seed must be at most ${MAX_SEED}, not ${seed}`);
+  if (!values.has('box')) throw new InputError('--sample needs --box name=lo:hi,… for every component of the state');
+  const box = parseBox(values.get('box')!, names, params);
+  const energyText = values.get('energy');
+  if (energyText === undefined) return { kind: 'sample', count, seed, box };
+  const dof = names.length / 2;
+  const solveFor = values.get('solve-for') ?? names[dof];
+  if (!names.slice(dof).includes(solveFor)) throw new InputError(`--solve-for ${solveFor}: name a momentum (${names.slice(dof).join(', ')})`);
+  return { kind: 'sample', count, seed, box, energy: { value: number(energyText, '--energy'), solveFor } };
+}
+
+export async function simulate(argv: readonly string[]): Promise<void> {
+  const parsed = parseSimulate(argv);
+  const { spec, output } = parsed;
+  if (output === undefined && (spec.format === 'npz' || spec.format === 'parquet') && process.stdout.isTTY) {
+    throw new InputError(`--format ${spec.format} is binary: give --output FILE, or send stdout to a file or a pipe`);
+  }
   const guard = new InterruptGuard();
+  // The output is checked, and its partial file made, before anything is compiled or computed.
   const sink: Sink = output ? fileSink(output, guard) : stdoutSink();
+  let run: PreparedRun | undefined;
+  const status = { steps: 0 };
+  let writer: ReturnType<typeof datasetWriter> | undefined;
   try {
-    await write(simulation, size.steps, format, meta, sink, guard.signal);
+    run = await prepareRun(spec, parsed);
+    writer = datasetWriter(run, sink, output);
+    // Files kept aside (an NPZ's later arrays) must be removed on Ctrl-C even when stdout is the output.
+    if (writer.keepsFiles) guard.hold();
+    await executeRun(run, writer.writer, { workers: parsed.workers, signal: guard.signal, timeChunkRows: writer.timeChunkRows, status });
     sink.commit();
   } catch (error) {
+    writer?.writer.abandon();
     sink.abandon();
-    if (error instanceof Interrupted) {
-      throw new Interrupted(error.signal, ` at t = ${simulation.t.toPrecision(6)} of ${tEnd}; ${output ?? 'the output'} was not written`);
-    }
+    if (error instanceof Interrupted) throw new Interrupted(error.signal, interruptedAt(run, status.steps, output));
     throw error;
+  } finally {
+    guard.release();
   }
 }
 
-async function write(simulation: Simulation, steps: number, format: string, meta: ExportMeta, sink: Sink, signal: AbortSignal): Promise<void> {
-  const { record } = simulation;
-  const progress = progressBar();
-  sink.write(format === 'csv' ? csvHeader(record.columns) : jsonHead(meta, record.columns));
-  let first = true;
-  const flush = () => {
-    for (const { data, from, to } of record.slices()) {
-      if (format === 'csv') sink.write(csvRows(data, record.width, from, to));
-      else {
-        sink.write(jsonRows(data, record.width, from, to, first));
-        if (to > from) first = false;
-      }
-    }
-    record.clear();
-  };
-  try {
-    await pacedRun(simulation, steps, {
-      flush,
-      progress: () => progress.update(simulation.steps / steps, `t = ${simulation.t.toPrecision(6)}`),
-      signal,
-    });
-    if (format === 'json') sink.write(jsonTail());
-  } finally {
-    // Before any message, so that it starts on a clean line.
-    progress.done();
-  }
+/** Where an interrupted run stopped, in its own terms: t for one trajectory, trajectories for many. */
+function interruptedAt(run: PreparedRun | undefined, steps: number, output: string | undefined): string {
+  const what = `${output ?? 'the output'} was not written`;
+  if (!run) return `; ${what}`;
+  const { shape, spec } = run;
+  if (shape.count <= 1) return ` at t = ${(spec.t0 + steps * spec.dt).toPrecision(6)} of ${spec.tEnd}; ${what}`;
+  return ` after ${Math.floor(steps / Math.max(1, run.steps))} of ${shape.count} trajectories; ${what}`;
 }

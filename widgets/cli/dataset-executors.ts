@@ -1,0 +1,111 @@
+/**
+ * Where tasks run: in this thread, in stretches that return to the event
+ * loop so that Ctrl-C is heard (as paced-run.ts does for a single run), or
+ * in worker threads, one task at a time each.
+ */
+import { Worker } from 'node:worker_threads';
+import { BlowUpError, InputError } from '../core/errors.ts';
+import type { Model } from '../core/types.ts';
+import type { WorkerError, WorkerInit } from './batch-worker.ts';
+import { TaskRunner, type Task, type TaskResult, type TaskSetup } from './dataset-task.ts';
+
+export interface Executor {
+  run(task: Task): Promise<TaskResult>;
+  /** stops at once, abandoning any task under way */
+  close(): Promise<void>;
+}
+
+/** Aimed-at duration of one stretch of computing between two returns to the event loop. */
+const STRETCH_MS = 20;
+
+const yieldToEventLoop = () => new Promise<void>((resolve) => setImmediate(resolve));
+
+/** Tasks run here, a stretch of rows at a time; `tick` is called at each return to the event loop. */
+export function localExecutor(model: Model, setup: TaskSetup, signal: AbortSignal | undefined, tick: (steps: number) => void): Executor {
+  const runner = new TaskRunner(model, setup);
+  let stride = 1;
+  let lastYield = performance.now();
+  return {
+    async run(task) {
+      const { out } = runner.begin(task);
+      const span = task.rowTo - task.rowFrom;
+      let steps = 0;
+      for (let done = 0; done < span; ) {
+        const rows = Math.min(stride, span - done);
+        const start = performance.now();
+        const taken = runner.produce(task, out, done, rows);
+        const now = performance.now();
+        steps += taken;
+        done += rows;
+        tick(taken);
+        // Grow at most fourfold at a time, aimed at STRETCH_MS (see paced-run.ts).
+        const elapsed = now - start;
+        stride = Math.max(1, Math.min(4 * stride, elapsed > 0 ? Math.floor((rows * STRETCH_MS) / elapsed) : 4 * stride));
+        if (now - lastYield >= STRETCH_MS) {
+          await yieldToEventLoop();
+          signal?.throwIfAborted();
+          lastYield = performance.now();
+        }
+      }
+      return runner.end(task, out, steps);
+    },
+    async close() {},
+  };
+}
+
+/** The error a worker reported, raised again here as what it was. */
+export function errorFromData(error: WorkerError): Error {
+  if (error.kind === 'blow-up') return new BlowUpError(error.t, error.component, error.value, error.trajectory);
+  if (error.kind === 'input') return new InputError(error.message);
+  return new Error(error.message);
+}
+
+/**
+ * Where the worker's code is: beside this module in the compiled CLI
+ * (build/cli/batch-worker.js); run from the TypeScript sources (tests, the
+ * tsx fallback), a small module that registers tsx and imports the source.
+ */
+function workerScript(): { url: URL; eval: false } | { code: string; eval: true } {
+  const here = import.meta.url;
+  if (/\.js$/.test(here)) return { url: new URL('./batch-worker.js', here), eval: false };
+  const source = new URL('./batch-worker.ts', here).href;
+  return { code: `import('tsx/esm/api').then(({ register }) => { register(); return import(${JSON.stringify(source)}); });`, eval: true };
+}
+
+/** A worker thread running tasks one at a time. */
+export function workerExecutor(init: WorkerInit): Executor {
+  const script = workerScript();
+  const worker = script.eval
+    ? new Worker(script.code, { eval: true, workerData: init })
+    : new Worker(script.url, { workerData: init });
+  const pending = new Map<number, { resolve: (r: TaskResult) => void; reject: (e: Error) => void }>();
+  let failure: Error | undefined;
+  const failAll = (error: Error) => {
+    failure ??= error;
+    for (const { reject } of pending.values()) reject(failure);
+    pending.clear();
+  };
+  worker.on('message', (message: TaskResult & { error?: WorkerError }) => {
+    if (message.error) {
+      const error = errorFromData(message.error);
+      if (message.id < 0) return failAll(error);
+      pending.get(message.id)?.reject(error);
+    } else pending.get(message.id)?.resolve(message);
+    pending.delete(message.id);
+  });
+  worker.on('error', (error) => failAll(error));
+  worker.on('exit', (code) => failAll(new Error(`a worker thread stopped (exit code ${code})`)));
+  return {
+    run(task) {
+      if (failure) return Promise.reject(failure);
+      return new Promise((resolve, reject) => {
+        pending.set(task.id, { resolve, reject });
+        worker.postMessage(task);
+      });
+    },
+    async close() {
+      failure ??= new Error('the worker was stopped');
+      await worker.terminate();
+    },
+  };
+}

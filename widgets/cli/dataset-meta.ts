@@ -1,0 +1,120 @@
+/**
+ * The meta a dataset file carries: everything needed to make it again
+ * (`phasebook reproduce`), and to tell whether shards belong together
+ * (`phasebook merge`). It keeps the keys of the single-run export (core's
+ * exportMeta) first, in their order, and adds the run's span (tEnd, steps,
+ * samples, and times when listed), the set of initial states, the number of
+ * trajectories, and for a shard which slice it is. Nothing in it depends on
+ * the machine, the time or the number of workers: the same run writes the
+ * same meta.
+ */
+import { METHOD } from '../core/export-meta.ts';
+import type { ExportMeta } from '../core/json.ts';
+import type { Model } from '../core/types.ts';
+import { VERSION } from '../core/version.ts';
+import type { RunSpec, SetSpec } from './run-spec.ts';
+
+export interface DatasetMeta extends ExportMeta {
+  tEnd: number;
+  steps: number;
+  samples: number;
+  times?: number[];
+  /** trajectories in this file */
+  count: number;
+  /** trajectories in the whole set */
+  trajectories: number;
+  initialSet: { kind: SetSpec['kind']; file?: string; [key: string]: unknown };
+  derivatives: boolean;
+  columns: string[];
+  format: string;
+  layout?: string;
+  shard?: { index: number; of: number; first: number };
+}
+
+export interface MetaInputs {
+  spec: RunSpec;
+  model: Model;
+  steps: number;
+  samples: number;
+  columns: string[];
+  total: number;
+  first: number;
+  count: number;
+}
+
+export function datasetMeta({ spec, model, steps, samples, columns, total, first, count }: MetaInputs): DatasetMeta {
+  const params: Record<string, number> = {};
+  model.paramNames.forEach((name, i) => (params[name] = model.params[i]));
+  const meta: Record<string, unknown> = {};
+  // The field is what was integrated; H, when given, only fills its column.
+  meta.hamiltonian = spec.vectorField !== undefined ? (spec.hamiltonian ?? '') : model.source;
+  if (spec.vectorField !== undefined) meta.vectorField = spec.vectorField;
+  meta.params = params;
+  if (spec.paramExpressions && Object.keys(spec.paramExpressions).length) meta.paramExpressions = spec.paramExpressions;
+  meta.dof = model.dof;
+  meta.dt = spec.dt;
+  meta.method = METHOD;
+  meta.every = spec.every;
+  meta.t0 = spec.t0;
+  meta.tEnd = spec.tEnd;
+  meta.steps = steps;
+  meta.samples = samples;
+  if (spec.times) meta.times = spec.times;
+  if (spec.set.kind === 'given') meta.initial = spec.set.values;
+  meta.route = model.route;
+  meta.names = [...model.names];
+  if (spec.coordinates) meta.coordinates = spec.coordinates;
+  if (spec.momenta) meta.momenta = spec.momenta;
+  meta.derived = model.hamiltonian ? ['H'] : [];
+  meta.derivatives = spec.derivatives;
+  meta.columns = columns;
+  meta.version = VERSION;
+  meta.count = count;
+  meta.trajectories = total;
+  meta.initialSet = setDescription(spec.set);
+  meta.format = spec.format;
+  if (spec.format === 'parquet') meta.layout = spec.layout;
+  if (spec.shard) meta.shard = { index: spec.shard.index, of: spec.shard.of, first };
+  return meta as unknown as DatasetMeta;
+}
+
+/** The set as the meta describes it; listed values are in `initial`, not repeated here. */
+function setDescription(set: SetSpec): DatasetMeta['initialSet'] {
+  if (set.kind === 'given') return set.file === undefined ? { kind: 'given' } : { kind: 'given', file: set.file };
+  return { ...set };
+}
+
+/** The meta of the whole set that shards with this meta make: no shard, and the set's count. */
+export function unshardedMeta(meta: DatasetMeta): DatasetMeta {
+  const whole = { ...meta, count: meta.trajectories };
+  delete whole.shard;
+  return whole;
+}
+
+/** The spec a meta describes, to run it again. */
+export function specFromMeta(meta: DatasetMeta): RunSpec {
+  const set: SetSpec =
+    meta.initialSet.kind === 'given'
+      ? { kind: 'given', values: meta.initial, ...(meta.initialSet.file !== undefined ? { file: meta.initialSet.file as string } : {}) }
+      : (meta.initialSet as unknown as SetSpec);
+  const vectorField = typeof meta.vectorField === 'string' ? meta.vectorField : undefined;
+  return {
+    hamiltonian: vectorField !== undefined && meta.hamiltonian === '' ? undefined : meta.hamiltonian,
+    vectorField,
+    dof: meta.dof,
+    params: meta.params,
+    paramExpressions: meta.paramExpressions as Record<string, string> | undefined,
+    coordinates: meta.coordinates as string[] | undefined,
+    momenta: meta.momenta as string[] | undefined,
+    dt: meta.dt,
+    t0: meta.t0,
+    tEnd: meta.tEnd,
+    every: meta.every,
+    times: meta.times,
+    set,
+    derivatives: meta.derivatives,
+    format: meta.format as RunSpec['format'],
+    layout: (meta.layout as RunSpec['layout']) ?? 'long',
+    shard: meta.shard ? { index: meta.shard.index, of: meta.shard.of } : undefined,
+  };
+}

@@ -1,0 +1,153 @@
+/**
+ * A `simulate` run from its spec: the model, the set of initial states, the
+ * sample times and the meta, then the trajectories computed on every core
+ * (or here, for a small run) and handed to a writer in its order.
+ */
+import { availableParallelism } from 'node:os';
+import { rowColumns } from '../core/dataset/batch-run.ts';
+import type { Axis, Range } from '../core/dataset/box.ts';
+import { fillInitial, trajectoryCount, type InitialSet } from '../core/dataset/initial-set.ts';
+import { stepsTo } from '../core/dataset/sample-times.ts';
+import { InputError } from '../core/errors.ts';
+import type { Model } from '../core/types.ts';
+import { datasetMeta, type DatasetMeta } from './dataset-meta.ts';
+import { localExecutor, workerExecutor, type Executor } from './dataset-executors.ts';
+import { planTasks } from './dataset-plan.ts';
+import { schedule } from './dataset-schedule.ts';
+import { sampleTimes, type TaskSetup, type TimesSpec } from './dataset-task.ts';
+import type { DatasetShape, DatasetWriter } from './formats/dataset-shape.ts';
+import { checkEvaluates, modelFromRecipe, modelRecipe, type ModelRecipe } from './model.ts';
+import { progressBar } from './progress.ts';
+import { checkRunSize, datasetSize } from './run-size.ts';
+import { shardRange, type RunSpec } from './run-spec.ts';
+
+/** Below this many steps in all, worker threads cost more to start (tens of milliseconds each) than they save. */
+const WORKER_THRESHOLD_STEPS = 2_000_000;
+
+export interface PreparedRun {
+  spec: RunSpec;
+  recipe: ModelRecipe;
+  model: Model;
+  set: InitialSet;
+  times: TimesSpec;
+  shape: DatasetShape;
+  meta: DatasetMeta;
+  /** steps per trajectory */
+  steps: number;
+}
+
+/** The core's set of initial states from the spec's, by the model's state names. */
+export function initialSet(spec: RunSpec, names: readonly string[]): InitialSet {
+  const { set } = spec;
+  const dim = names.length;
+  if (set.kind === 'given') {
+    if (set.values.length % dim !== 0) throw new InputError(`${set.values.length} initial values do not make whole states of ${dim} (${names.join(', ')})`);
+    return { kind: 'given', dim, values: set.values };
+  }
+  if (set.kind === 'grid') {
+    const axes: Axis[] = names.map((n) => ({ lo: set.axes[n][0], hi: set.axes[n][1], n: set.axes[n][2] }));
+    return { kind: 'grid', axes };
+  }
+  const box: Range[] = names.map((n) => ({ lo: set.box[n][0], hi: set.box[n][1] }));
+  if (!set.energy) return { kind: 'sample', count: set.count, seed: set.seed, box };
+  const component = names.indexOf(set.energy.solveFor);
+  if (component < dim / 2) throw new InputError(`--solve-for ${set.energy.solveFor}: name a momentum (${names.slice(dim / 2).join(', ')})`);
+  return { kind: 'sample', count: set.count, seed: set.seed, box, energy: { value: set.energy.value, component } };
+}
+
+export function timesOf(spec: RunSpec): { times: TimesSpec; steps: number } {
+  if (spec.times) {
+    const times: TimesSpec = { kind: 'list', t0: spec.t0, dt: spec.dt, times: spec.times };
+    const plan = sampleTimes(times);
+    const last = plan.count - 1;
+    return { times, steps: plan.step(last) + (plan.extra(last) > 0 ? 1 : 0) };
+  }
+  const steps = stepsTo(spec.t0, spec.tEnd, spec.dt);
+  if (!Number.isFinite(steps)) throw new InputError('--t-end / --dt is too many steps to count; raise --dt or lower --t-end');
+  if (steps < 0) throw new InputError(`--t-end ${spec.tEnd} is before --t0 ${spec.t0}`);
+  return { times: { kind: 'every', t0: spec.t0, dt: spec.dt, steps, every: spec.every }, steps: spec.every * Math.floor(steps / spec.every) };
+}
+
+/** Builds everything a run needs and checks it, before any output: the model, a first initial state that evaluates, the size. */
+export async function prepareRun(spec: RunSpec, options: { cache: boolean; force: boolean }): Promise<PreparedRun> {
+  const { times, steps } = timesOf(spec);
+  const samples = sampleTimes(times).count;
+  const recipe = await modelRecipe({ ...spec, cache: options.cache });
+  const model = await modelFromRecipe(recipe);
+  const set = initialSet(spec, model.names);
+  const total = trajectoryCount(set);
+  if (spec.shard && spec.shard.index > spec.shard.of) throw new InputError(`--shard ${spec.shard.index}/${spec.shard.of}: the shard number runs from 1 to ${spec.shard.of}`);
+  const { first, end } = shardRange(total, spec.shard);
+  const count = end - first;
+  const columns = rowColumns(model, spec.derivatives);
+  const size = datasetSize({ steps, samples, trajectories: count, columns: columns.length + (total > 1 ? 1 : 0), format: spec.format });
+  checkRunSize(size, options.force);
+  // The first state of the set, evaluated: a JS H that throws or returns a string, an energy no point reaches, are said now.
+  const probe = new Float64Array(model.dim);
+  fillInitial(set, first < end ? first : 0, 1, probe, { dim: model.dim, hamiltonian: model.hamiltonian, t0: spec.t0, names: model.names });
+  checkEvaluates(model, probe, spec.t0);
+  const shape: DatasetShape = { columns, names: model.names, count, first, total, samples };
+  const meta = datasetMeta({ spec, model, steps, samples, columns, total, first, count });
+  return { spec, recipe, model, set, times, shape, meta, steps };
+}
+
+export interface ExecuteOptions {
+  workers: number;
+  signal?: AbortSignal;
+  /** rows per chunk in time order (a wide table's row group) */
+  timeChunkRows?: number;
+  /** a progress bar on a terminal; off for reproduce's quiet run */
+  progress?: boolean;
+  /** kept up to date with the steps done, summed over the trajectories: where an interrupted run stopped */
+  status?: { steps: number };
+}
+
+/** The default number of workers: every core. */
+export function defaultWorkers(): number {
+  return availableParallelism();
+}
+
+/** Computes every trajectory of the prepared run and writes them with `writer`, in its order. */
+export async function executeRun(run: PreparedRun, writer: DatasetWriter, options: ExecuteOptions): Promise<void> {
+  const { shape, model, spec } = run;
+  const total = run.steps * shape.count;
+  const wanted = total < WORKER_THRESHOLD_STEPS ? 1 : Math.max(1, options.workers);
+  const plan = planTasks({ ...shape, width: shape.columns.length }, writer.order, wanted, options.timeChunkRows ?? shape.samples);
+  const workers = Math.max(1, Math.min(wanted, plan.runs));
+  const text = writerText(writer);
+  const setup: TaskSetup = { times: run.times, set: run.set, derivatives: spec.derivatives, text, numberTrajectories: shape.total > 1 };
+  const bar = options.progress === false ? undefined : progressBar();
+  let done = 0;
+  const label = () =>
+    shape.count > 1
+      ? `${Math.min(shape.count, Math.floor(done / Math.max(1, run.steps)))}/${shape.count} trajectories`
+      : `t = ${(spec.t0 + done * spec.dt).toPrecision(6)}`;
+  const advance = (steps: number) => {
+    done += steps;
+    if (options.status) options.status.steps = done;
+    bar?.update(total > 0 ? done / total : 1, label());
+  };
+  const executors: Executor[] =
+    workers === 1
+      ? [localExecutor(model, setup, options.signal, advance)]
+      : Array.from({ length: workers }, () => workerExecutor({ recipe: run.recipe, setup }));
+  try {
+    await schedule(plan, executors, {
+      order: writer.order,
+      ahead: 2 * workers + 2,
+      write: (task, result) => writer.write({ first: task.first, count: task.count, rowFrom: task.rowFrom, rowTo: task.rowTo, data: result.data, text: result.text }),
+      done: workers === 1 ? undefined : (result) => advance(result.steps),
+      signal: options.signal,
+    });
+  } finally {
+    bar?.done();
+    await Promise.all(executors.map((e) => e.close()));
+  }
+  writer.finish();
+}
+
+/** The text format of a writer whose rows a worker may format, if it is one. */
+function writerText(writer: DatasetWriter): TaskSetup['text'] {
+  const w = writer as DatasetWriter & { textFormat?: TaskSetup['text'] };
+  return w.textFormat;
+}

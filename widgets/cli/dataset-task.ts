@@ -1,0 +1,108 @@
+/**
+ * The unit of work of a dataset run, the same in the main thread and in a
+ * worker: rows [rowFrom, rowTo) of trajectories [first, first + count) of
+ * one run (a run is a batch of trajectories integrated from t0 to the last
+ * sample, a chunk of rows at a time), returned as numbers or, for a text
+ * format, as the formatted rows.
+ */
+import { BatchRun } from '../core/dataset/batch-run.ts';
+import { fillInitial, type InitialSet } from '../core/dataset/initial-set.ts';
+import { everyKSteps, listedTimes, type SampleTimes } from '../core/dataset/sample-times.ts';
+import type { Model } from '../core/types.ts';
+import { formatRows, type TextFormat } from './formats/text-rows.ts';
+
+/** How sample times are made, as data a worker can receive. */
+export type TimesSpec = { kind: 'every'; t0: number; dt: number; steps: number; every: number } | { kind: 'list'; t0: number; dt: number; times: number[] };
+
+export function sampleTimes(spec: TimesSpec): SampleTimes {
+  return spec.kind === 'every' ? everyKSteps(spec.t0, spec.dt, spec.steps, spec.every) : listedTimes(spec.t0, spec.dt, spec.times);
+}
+
+export interface TaskSetup {
+  times: TimesSpec;
+  set: InitialSet;
+  derivatives: boolean;
+  /** set when blocks go out as text, formatted where they are computed */
+  text?: { format: TextFormat; numbered: boolean };
+  /** whether blow-ups name the trajectory (the set has more than one) */
+  numberTrajectories: boolean;
+}
+
+export interface Task {
+  id: number;
+  /** the run this chunk belongs to: its first chunk starts it, its last ends it */
+  run: number;
+  first: number;
+  count: number;
+  rowFrom: number;
+  rowTo: number;
+  last: boolean;
+}
+
+export interface TaskResult {
+  id: number;
+  data?: Float64Array;
+  text?: string;
+  /** steps taken for this chunk, summed over its trajectories */
+  steps: number;
+}
+
+/** Runs tasks against live runs, keeping each run's state from one chunk to the next. */
+export class TaskRunner {
+  private readonly runs = new Map<number, BatchRun>();
+  private readonly times: SampleTimes;
+
+  constructor(
+    private readonly model: Model,
+    private readonly setup: TaskSetup,
+  ) {
+    this.times = sampleTimes(setup.times);
+  }
+
+  private batch(task: Task): BatchRun {
+    let run = this.runs.get(task.run);
+    if (!run) {
+      const { model, setup } = this;
+      const initial = new Float64Array(task.count * model.dim);
+      fillInitial(setup.set, task.first, task.count, initial, { dim: model.dim, hamiltonian: model.hamiltonian, t0: setup.times.t0, names: model.names });
+      run = new BatchRun(model, this.times, initial, setup.times.t0, setup.times.dt, {
+        first: setup.numberTrajectories ? task.first : undefined,
+        derivatives: setup.derivatives,
+      });
+      this.runs.set(task.run, run);
+    }
+    return run;
+  }
+
+  /** A buffer for the task's rows, and how wide a row is. */
+  begin(task: Task): { out: Float64Array; width: number; run: BatchRun } {
+    const run = this.batch(task);
+    return { out: new Float64Array(task.count * (task.rowTo - task.rowFrom) * run.width), width: run.width, run };
+  }
+
+  /** Produces `rows` more rows of the task, from row `done` of it, into `out`. */
+  produce(task: Task, out: Float64Array, done: number, rows: number): number {
+    const run = this.runs.get(task.run)!;
+    const before = run.stepsDone;
+    const span = task.rowTo - task.rowFrom;
+    run.produce(rows, out, { base: done * run.width, trajectoryStride: span * run.width, rowStride: run.width });
+    return run.stepsDone - before;
+  }
+
+  /** The task's result, the run forgotten after its last chunk. */
+  end(task: Task, out: Float64Array, steps: number): TaskResult {
+    const run = this.runs.get(task.run)!;
+    if (task.last) this.runs.delete(task.run);
+    const text = this.setup.text;
+    if (!text) return { id: task.id, data: out, steps };
+    const block = { first: task.first, count: task.count, rowFrom: task.rowFrom, rowTo: task.rowTo, data: out };
+    return { id: task.id, text: formatRows(text.format, block, run.width, text.numbered), steps };
+  }
+
+  /** The whole task at once, as a worker does it. */
+  runWhole(task: Task): TaskResult {
+    const { out } = this.begin(task);
+    const steps = this.produce(task, out, 0, task.rowTo - task.rowFrom);
+    return this.end(task, out, steps);
+  }
+}
