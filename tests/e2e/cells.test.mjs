@@ -11,7 +11,8 @@ let site;
 before(async () => (site = await openSite()));
 after(() => site?.close());
 
-const PERIOD_OF = (omega) => `period = ${(2 * Math.PI) / omega}`;
+/** The inspector shows numbers to 12 significant digits (widgets/cells/inspect.ts). */
+const PERIOD_OF = (omega) => `period = ${Number(((2 * Math.PI) / omega).toPrecision(12))}`;
 
 test('cells show their first values: numbers inspected, html as DOM', async () => {
   const { page, problems } = await openChapter(site, '/introduction/');
@@ -134,6 +135,24 @@ test('builtins: now ticks, width follows the text column, invalidation resolves 
   assert.equal(await page.evaluate(() => document.body.dataset.invalidated), undefined);
   await typeIntoCell(page, 'omega', 'omega = 11');
   await page.waitForFunction(() => document.body.dataset.invalidated === 'yes');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('the inspector is compact: a model in one line, numbers rounded for reading, long lists open on demand', async () => {
+  const { page, problems } = await openChapter(site, '/introduction/');
+  assert.match(await outputOf(page, 'model'), /^model = Model: 1 DOF, exact derivatives, H = p\^2\/2 \+ omega\^2\*\(1 \+ u\*cos\(gamma\*t\)\)/);
+  await typeIntoCell(page, 'omega', 'omega = 0.1 + 0.2 - 3.9');
+  await waitForOutput(page, 'omega', (text) => text === 'omega = -3.6');
+  await typeIntoCell(page, 'omega', 'omega = Array.from({length: 100}, (_, i) => i)');
+  await waitForOutput(page, 'omega', (text) => text.startsWith('omega = [0, 1, 2'));
+  const list = cell(page, 'omega').locator('details.inspect-list');
+  assert.match((await list.locator('summary').textContent()) ?? '', /… 80 more\]$/);
+  await list.locator('summary').click();
+  assert.match((await list.locator('.inspect-all').textContent()) ?? '', /, 98, 99$/);
+  // A typed array inside another value is named, not listed.
+  await typeIntoCell(page, 'omega', 'omega = ({x: new Float64Array(351), y: [new Float64Array(4)]})');
+  await waitForOutput(page, 'omega', (text) => text === 'omega = {x: Float64Array(351), y: [Float64Array(4)]}');
   assert.deepEqual(problems, []);
   await page.close();
 });

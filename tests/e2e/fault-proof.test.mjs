@@ -16,7 +16,8 @@ before(async () => (site = await openSite()));
 after(() => site?.close());
 
 const SIM = '[data-cell="sim"] [data-widget="simulator"]';
-const PERIOD_OF = (omega) => `period = ${(2 * Math.PI) / omega}`;
+/** The inspector shows numbers to 12 significant digits (widgets/cells/inspect.ts). */
+const PERIOD_OF = (omega) => `period = ${Number(((2 * Math.PI) / omega).toPrecision(12))}`;
 
 /** The simulated time of the playground's simulator. */
 const simTime = (page) => page.evaluate((selector) => document.querySelector(selector)?.simulator.simulation.t ?? NaN, SIM);

@@ -11,7 +11,8 @@ let site;
 before(async () => (site = await openSite()));
 after(() => site?.close());
 
-const PERIOD_OF = (omega) => `period = ${(2 * Math.PI) / omega}`;
+/** The inspector shows numbers to 12 significant digits (widgets/cells/inspect.ts). */
+const PERIOD_OF = (omega) => `period = ${Number(((2 * Math.PI) / omega).toPrecision(12))}`;
 
 /** The storage key of a cell's edit on this page (widgets/cells/storage.ts): the browser's secret, the page's path, the cell. */
 const editKey = (page, id) =>

@@ -1,8 +1,12 @@
 /**
  * A compact, one-line view of a cell's value, for values that are not DOM
- * nodes: `period = 0.6283185307179586`, `Float64Array(256) [0, 0.02, …]`,
- * `{q: 1, p: 0}`. Long collections are cut short rather than flooding the page.
+ * nodes: `period = 0.628318530718`, `Float64Array(256) [0, 0.02, …]`,
+ * `{q: 1, p: 0}`. Long collections are cut short rather than flooding the
+ * page, and a long top-level list opens to show the rest; a typed array
+ * inside another value is named, not listed; an object that carries a
+ * one-line summary (core/summary.ts: a model, a simulation) shows that.
  */
+import { SUMMARY } from '../core/summary.ts';
 
 /** Items shown of an array, set or map at the top level (fewer when nested). */
 const MAX_ITEMS = 20;
@@ -18,8 +22,16 @@ function token(kind: string, text: string): Part {
   return [kind, text];
 }
 
+/** Significant digits a number is shown with: enough for any reading, few enough that 3.6 is not 3.5999999999999996. */
+const DIGITS = 12;
+
+/** Items of a long top-level list shown when the reader opens it. */
+const MAX_OPEN_ITEMS = 2000;
+
 function formatNumber(value: number): string {
-  return Object.is(value, -0) ? '-0' : String(value);
+  if (Object.is(value, -0)) return '-0';
+  if (!Number.isFinite(value) || Number.isInteger(value)) return String(value);
+  return String(Number(value.toPrecision(DIGITS)));
 }
 
 function formatString(value: string, depth: number): string {
@@ -61,13 +73,25 @@ function* take<T, U>(items: Iterable<T>, limit: number, map: (item: T) => U): It
   }
 }
 
+function summaryOf(value: object): string | null {
+  const summary: unknown = (value as { [SUMMARY]?: unknown })[SUMMARY];
+  if (typeof summary !== 'function') return null;
+  try {
+    return String(summary.call(value));
+  } catch {
+    return null;
+  }
+}
+
 function describeObject(value: object, depth: number): Part[] {
+  const summary = summaryOf(value);
+  if (summary !== null) return [token('object', summary)];
   if (value instanceof Date) return [token('date', Number.isNaN(value.getTime()) ? 'Invalid Date' : value.toISOString())];
   if (value instanceof RegExp) return [token('regexp', String(value))];
   if (value instanceof Error) return [token('error', `${value.name}: ${value.message}`)];
   const name = constructorName(value);
   const size = isIndexed(value) ? value.length : value instanceof Map || value instanceof Set ? value.size : null;
-  if (depth >= MAX_DEPTH) return [token('object', size === null ? `${name} {…}` : `${name}(${size})`)];
+  if (depth >= MAX_DEPTH || (depth > 0 && ArrayBuffer.isView(value))) return [token('object', size === null ? `${name} {…}` : `${name}(${size})`)];
 
   const limit = depth === 0 ? MAX_ITEMS : MAX_ITEMS / 4;
   const prefix = name === 'Array' || name === 'Object' ? [] : [token('object', `${name}${size === null ? '' : `(${size})`} `)];
@@ -100,16 +124,37 @@ function describe(value: unknown, depth: number): Part[] {
   }
 }
 
-/** The value as a line of `span.inspect-<kind>` pieces, prefixed by `name = ` for a named cell. */
-export function inspect(value: unknown, name: string | null): HTMLElement {
-  const line = document.createElement('span');
-  line.className = 'inspect';
-  const parts: Part[] = name ? [token('name', name), token('punct', ' = '), ...describe(value, 0)] : describe(value, 0);
+function render(parts: readonly Part[], into: HTMLElement): HTMLElement {
   for (const [kind, text] of parts) {
     const span = document.createElement('span');
     span.className = `inspect-${kind}`;
     span.textContent = text;
-    line.append(span);
+    into.append(span);
   }
-  return line;
+  return into;
+}
+
+/**
+ * The value as a line of `span.inspect-<kind>` pieces, prefixed by `name = `
+ * for a named cell. A top-level list longer than the line shows is a
+ * <details> that opens to its first MAX_OPEN_ITEMS items.
+ */
+export function inspect(value: unknown, name: string | null): HTMLElement {
+  const parts: Part[] = name ? [token('name', name), token('punct', ' = '), ...describe(value, 0)] : describe(value, 0);
+  const line = render(parts, document.createElement('span'));
+  line.className = 'inspect';
+  const long = typeof value === 'object' && value !== null && isIndexed(value) && value.length > MAX_ITEMS && summaryOf(value) === null;
+  if (!long) return line;
+  const details = document.createElement('details');
+  details.className = 'inspect inspect-list';
+  const summary = document.createElement('summary');
+  summary.append(...line.childNodes);
+  const all = document.createElement('div');
+  all.className = 'inspect-all';
+  const items = value as ArrayLike<unknown>;
+  const shown = Math.min(items.length, MAX_OPEN_ITEMS);
+  const listed = Array.from({ length: shown }, (_, i) => describe(items[i], 1).map(([, text]) => text).join('')).join(', ');
+  all.textContent = shown < items.length ? `${listed}, … ${items.length - shown} more` : listed;
+  details.append(summary, all);
+  return details;
 }

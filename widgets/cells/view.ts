@@ -20,6 +20,9 @@ const ERROR_ORDER: readonly ErrorKind[] = ['compile', 'runtime', 'later'];
  */
 export type CellState = 'waiting' | 'pending' | 'fulfilled' | 'rejected';
 
+/** The inspector shows a cell's changing value at most this often. */
+const INSPECT_INTERVAL_MS = 250;
+
 /** A cell pending longer than this shows "running…". */
 const PENDING_NOTICE_MS = 150;
 
@@ -52,6 +55,9 @@ export class CellView {
   readonly #activity: HTMLElement | null;
   #activityTimer: ReturnType<typeof setTimeout> | undefined;
   readonly #errors = new Map<ErrorKind, string>();
+  /** When the inspector last showed a value, and the repaint it put off. */
+  #inspectedAt = -Infinity;
+  #inspectTimer: ReturnType<typeof setTimeout> | undefined;
   /** The build's highlighted code, to put back on Reset before an editor exists. */
   readonly #originalCode: Node | null;
 
@@ -111,8 +117,16 @@ export class CellView {
     if (this.#activity && this.#activity.textContent !== text) this.#activity.textContent = text;
   }
 
-  /** A DOM node is shown as itself (kept if it is already shown); anything else through the inspector. */
+  /**
+   * A DOM node is shown as itself (kept if it is already shown); anything
+   * else through the inspector, at most a few times a second: a generator
+   * cell's state changes every frame, and a line of numbers rewritten sixty
+   * times a second cannot be read. A cell that wants every frame shows a DOM
+   * node (html`…`), which is always shown at once.
+   */
   showValue(value: unknown, name: string | null): void {
+    clearTimeout(this.#inspectTimer);
+    this.#inspectTimer = undefined;
     if (value instanceof Node) {
       if (this.#output.firstChild !== value || this.#output.childNodes.length !== 1) this.#output.replaceChildren(value);
       return;
@@ -121,6 +135,12 @@ export class CellView {
       this.#output.replaceChildren();
       return;
     }
+    const wait = this.#inspectedAt + INSPECT_INTERVAL_MS - performance.now();
+    if (wait > 0) {
+      this.#inspectTimer = setTimeout(() => this.showValue(value, name), wait);
+      return;
+    }
+    this.#inspectedAt = performance.now();
     this.#output.replaceChildren(inspect(value, name));
   }
 
@@ -143,6 +163,7 @@ export class CellView {
   }
 
   clearOutput(): void {
+    clearTimeout(this.#inspectTimer);
     this.#output.replaceChildren();
   }
 

@@ -5,6 +5,7 @@ import { stateNames } from './expression/names.ts';
 import { modelFromCompiled } from './model-from-compiled.ts';
 import { gradientField, type OpaqueHamiltonian } from './js-function/stencil.ts';
 import { rk38 } from './rk38.ts';
+import { withSummary } from './summary.ts';
 import type { HamiltonianFunction, Model, Route, VectorField } from './types.ts';
 
 /**
@@ -79,7 +80,7 @@ function fieldModel(spec: HamiltonianSpec, names: string[], route: Route, field:
   const dim = 2 * spec.dof;
   const params = spec.params ?? {};
   const h = spec.hamiltonian;
-  return {
+  return withSummary({
     dof: spec.dof,
     dim,
     names,
@@ -91,7 +92,7 @@ function fieldModel(spec: HamiltonianSpec, names: string[], route: Route, field:
     stepper: rk38(field, dim),
     field,
     hamiltonian: typeof h === 'function' ? opaqueAsHamiltonian(h, dim) : undefined,
-  };
+  });
 }
 
 function opaqueAsHamiltonian(h: OpaqueHamiltonian, dim: number): HamiltonianFunction {

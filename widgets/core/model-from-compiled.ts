@@ -7,6 +7,7 @@ import { InputError } from './errors.ts';
 import { functionFromSource } from './js-function/compile.ts';
 import { stencilField, type OpaqueHamiltonian } from './js-function/stencil.ts';
 import { rk38 } from './rk38.ts';
+import { withSummary } from './summary.ts';
 import type { HamiltonianFunction, Model, Stepper, VectorField } from './types.ts';
 
 const ACCURACY: Record<CompiledRoute, string> = {
@@ -52,17 +53,17 @@ export function modelFromCompiled(
   };
   if (compiled.route === 'js-stencil') {
     const opaque = typeof hamiltonian === 'function' ? hamiltonian : undefined;
-    return { ...common, ...stencilParts(compiled, values, opaque) };
+    return withSummary({ ...common, ...stencilParts(compiled, values, opaque) });
   }
   const code = compiled.code!;
   const advance = new Function(code.stepper)() as Stepper['advance'];
-  return {
+  return withSummary({
     ...common,
     stepper: { dim: common.dim, advance },
     field: new Function(code.field)()(values) as VectorField,
     hamiltonian: new Function(code.hamiltonian)()(values) as HamiltonianFunction,
     latex: compiled.latex,
-  };
+  });
 }
 
 /**

@@ -1,5 +1,6 @@
 import { BlowUpError, InputError } from './errors.ts';
 import { TrajectoryRecord } from './record.ts';
+import { SUMMARY } from './summary.ts';
 import type { Model } from './types.ts';
 
 /** A series computed from each sample, e.g. H or an action I = H/ω. */
@@ -86,6 +87,12 @@ export class Simulation {
    * Advances by up to `steps` steps, recording every `every`-th; returns the
    * steps taken, fewer only when the state blew up (see `error`).
    */
+  /** One line for the cells' inspector (core/summary.ts). */
+  [SUMMARY](): string {
+    const trajectories = this.count === 1 ? '1 trajectory' : `${this.count.toLocaleString('en')} trajectories`;
+    return `Simulation: t = ${Number(this.t.toPrecision(6))}, ${this.steps.toLocaleString('en')} steps of dt = ${this.dt}, ${trajectories}${this.error ? ', stopped: blow-up' : ''}`;
+  }
+
   run(steps: number): number {
     if (this.error) return 0;
     const { model, state, count, dt, every } = this;
