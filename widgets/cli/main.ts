@@ -5,11 +5,15 @@ import { OutputError } from './output-error.ts';
 import { byteSize, count, OUTPUT_LIMIT, STEP_LIMIT } from './run-size.ts';
 import { SIMULATE_USAGE, simulate } from './simulate.ts';
 import { SPECTRUM_USAGE, spectrumCommand } from './spectrum.ts';
+import { MERGE_USAGE, mergeCommand } from './merge.ts';
+import { REPRODUCE_USAGE, reproduceCommand } from './reproduce.ts';
 
 const USAGE = `phasebook ${VERSION}: simulate Hamiltonian systems and analyse their spectra
 
   ${SIMULATE_USAGE}
   ${SPECTRUM_USAGE}
+  ${MERGE_USAGE}
+  ${REPRODUCE_USAGE}
 
 H is a math expression (p^2/2 + omega0^2*q^2/2 + alpha*q^3) or a JS arrow
 function ((t, x) => x[1]**2/2 + x[0]**2/2); --param values are visible to both.
@@ -38,6 +42,14 @@ export async function main(argv: readonly string[]): Promise<number> {
       case 'spectrum':
         process.stdout.write(spectrumCommand(rest));
         return 0;
+      case 'merge':
+        process.stdout.write(await mergeCommand(rest));
+        return 0;
+      case 'reproduce': {
+        const { text, status } = await reproduceCommand(rest);
+        process.stdout.write(text);
+        return status;
+      }
       case undefined:
       case '--help':
       case 'help':
@@ -47,7 +59,7 @@ export async function main(argv: readonly string[]): Promise<number> {
         process.stdout.write(`${VERSION}\n`);
         return 0;
       default:
-        throw new InputError(`unknown command "${command}"; use simulate or spectrum (phasebook --help)`);
+        throw new InputError(`unknown command "${command}"; use simulate, spectrum, merge or reproduce (phasebook --help)`);
     }
   } catch (error) {
     if (error instanceof Interrupted) {

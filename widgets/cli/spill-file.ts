@@ -15,7 +15,7 @@ import { createPartial } from './partial-file.ts';
 const CHUNK = 1 << 20;
 
 export class SpillFile {
-  private readonly path: string;
+  readonly path: string;
   private readonly fd: number;
   private size = 0;
   private closed = false;

@@ -1,0 +1,83 @@
+/**
+ * `phasebook reproduce FILE`: runs again the run whose meta FILE carries
+ * (JSON, NPZ or Parquet), into a temporary file of the same format, and
+ * compares every number with FILE's, bit for bit. Prints what it found;
+ * the status is 0 when every number is the same, 1 when one differs.
+ */
+import { InputError } from '../core/errors.ts';
+import { BLOCK_VALUES } from './dataset-plan.ts';
+import { specFromMeta } from './dataset-meta.ts';
+import { defaultWorkers, executeRun, prepareRun } from './dataset-run.ts';
+import { datasetWriter } from './dataset-writer.ts';
+import type { Block } from './formats/dataset-shape.ts';
+import { openDataset, type DatasetFile } from './formats/dataset-read.ts';
+import { InterruptGuard } from './interrupt.ts';
+import type { Sink } from './output.ts';
+import { SpillFile } from './spill-file.ts';
+import { parseArgs, wholeNumber } from './args.ts';
+
+export const REPRODUCE_USAGE = 'phasebook reproduce FILE [--workers K] [--no-cache]';
+
+/** Every number of a file's blocks, in order, with where it is. */
+async function* numbers(file: DatasetFile): AsyncGenerator<{ value: number; trajectory: number; row: number; column: number }> {
+  const width = file.shape.columns.length;
+  for await (const block of file.blocks(BLOCK_VALUES) as AsyncGenerator<Block>) {
+    const data = block.data!;
+    const rows = block.rowTo - block.rowFrom;
+    for (let i = 0; i < data.length; i++) {
+      const column = i % width;
+      const r = Math.floor(i / width);
+      yield { value: data[i], trajectory: block.first + Math.floor(r / rows), row: block.rowFrom + (r % rows), column };
+    }
+  }
+}
+
+export async function reproduceCommand(argv: readonly string[]): Promise<{ text: string; status: number }> {
+  const [path, ...rest] = argv;
+  if (path === undefined || path.startsWith('--')) throw new InputError(`give the file to reproduce (usage: ${REPRODUCE_USAGE})`);
+  const args = parseArgs(rest, { workers: 'value', 'no-cache': 'flag' });
+  const workers = args.values.has('workers') ? wholeNumber(args.values.get('workers')!, '--workers') : defaultWorkers();
+  const file = await openDataset(path);
+  const guard = new InterruptGuard();
+  guard.hold();
+  let rerun: SpillFile | undefined;
+  let again: DatasetFile | undefined;
+  let writer: ReturnType<typeof datasetWriter> | undefined;
+  try {
+    const spec = specFromMeta(file.meta);
+    const run = await prepareRun(spec, { cache: !args.flags.has('no-cache'), force: true });
+    rerun = new SpillFile(undefined, `reproduce.${file.format}`);
+    const spill = rerun;
+    const sink: Sink = { write: (data) => spill.append(typeof data === 'string' ? Buffer.from(data) : data), commit: () => {}, abandon: () => {} };
+    writer = datasetWriter(run, sink, undefined);
+    await executeRun(run, writer.writer, { workers, signal: guard.signal, timeChunkRows: writer.timeChunkRows });
+    again = await openDataset(rerun.path);
+    const expected = numbers(file);
+    const got = numbers(again);
+    let compared = 0;
+    for (;;) {
+      const [a, b] = await Promise.all([expected.next(), got.next()]);
+      if (a.done || b.done) {
+        if (a.done !== b.done) return { text: `${path}: the run gives ${a.done ? 'more' : 'fewer'} numbers than the file holds (after ${compared})\n`, status: 1 };
+        break;
+      }
+      const x = a.value;
+      const y = b.value;
+      if (!Object.is(x.value, y.value) && !(Number.isNaN(x.value) && Number.isNaN(y.value))) {
+        const name = file.shape.columns[x.column];
+        const where = file.shape.total > 1 ? `trajectory ${x.trajectory}, ` : '';
+        return { text: `${path}: differs at ${where}sample ${x.row}, ${name}: the file has ${x.value}, the run gives ${y.value}\n`, status: 1 };
+      }
+      compared++;
+    }
+    const { meta } = file;
+    const version = meta.version === run.meta.version ? '' : ` (the file was written by phasebook ${meta.version}, this is ${run.meta.version})`;
+    return { text: `${path}: reproduced, ${meta.count} trajectories × ${meta.samples} samples, all ${compared} numbers identical${version}\n`, status: 0 };
+  } finally {
+    writer?.writer.abandon();
+    again?.close();
+    file.close();
+    rerun?.remove();
+    guard.release();
+  }
+}
