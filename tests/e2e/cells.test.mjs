@@ -156,3 +156,22 @@ test('the inspector is compact: a model in one line, numbers rounded for reading
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('the simulator’s dt field and the chapter’s dt cell are one value: the checks follow the field', async () => {
+  const { page, problems } = await openChapter(site, '/introduction/');
+  const field = cell(page, 'sim').locator('input[aria-label="Time step dt"]');
+  await field.fill('0.001');
+  await field.press('Enter');
+  await waitForOutput(page, 'dt', (text) => text === 'dt = 0.001');
+  assert.equal(await cell(page, 'dt').locator('.cell-editor').textContent(), 'dt = 0.001');
+  assert.equal(await cell(page, 'dt').getAttribute('data-cell-edited'), '');
+  // The widget was rebuilt from the cell, and the step-halving check uses the new dt.
+  await page.waitForFunction(() => document.querySelector('[data-cell="sim"] [data-widget="simulator"]')?.simulator?.simulation?.dt === 0.001);
+  await page.waitForFunction(
+    () => [...document.querySelectorAll('[data-widget="theory-check"]')].some((check) => /dt = 0\.001\b/.test(check.textContent ?? '')),
+    null,
+    { timeout: 30_000 },
+  );
+  assert.deepEqual(problems, []);
+  await page.close();
+});

@@ -19,6 +19,7 @@ import { blockedMessage, cellOfSource, recentCell, stackOf } from './cell-errors
 import { LiveCell } from './cell.ts';
 import { MathSnapshot, pageIntact, showPageBroken } from './integrity.ts';
 import { formatError } from './spec.ts';
+import { INPUT_EVENT, type WidgetInput } from './widget-input.ts';
 import { Notebook } from './runtime.ts';
 import { CellScheduler } from './schedule.ts';
 import { EditStore } from './storage.ts';
@@ -64,6 +65,23 @@ function reportLaterErrors(cells: readonly LiveCell[]): void {
   });
 }
 
+/**
+ * A widget's control for a value the widget got from another cell (a
+ * simulator's dt field, its dt from the chapter's `dt` cell) sets that cell:
+ * one value, which the chapter's checks use too.
+ */
+function passWidgetInputs(root: HTMLElement, cells: readonly LiveCell[]): void {
+  root.addEventListener(INPUT_EVENT, (event) => {
+    const { name, value } = (event as CustomEvent<Partial<WidgetInput>>).detail ?? {};
+    if (typeof name !== 'string' || typeof value !== 'number') return;
+    const holder = cells.find((cell) => cell.root.contains(event.target as Node));
+    const source = cells.find((cell) => cell.name === name);
+    if (!holder || !source || source === holder || !holder.inputs.includes(name)) return;
+    event.preventDefault();
+    source.setFromWidget(value);
+  });
+}
+
 function boot(): void {
   const root = document.querySelector<HTMLElement>('[data-chapter]');
   if (!root) return;
@@ -101,6 +119,7 @@ function boot(): void {
     if (document.visibilityState === 'hidden') cells.forEach((cell) => cell.flush());
   });
   reportLaterErrors(cells);
+  passWidgetInputs(root, cells);
   // Another tab of this book saved an edit: the cell showing it hears of it.
   const byKey = new Map(cells.map((cell) => [store.editKey(cell.id), cell]));
   addEventListener('storage', (event) => {

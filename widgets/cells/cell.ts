@@ -63,6 +63,8 @@ export class LiveCell {
   #draft: string;
   /** The text whose definition runs (the original until the reader runs something else). */
   #running: string;
+  /** The inputs of the running definition. */
+  #inputs: readonly string[] = [];
   #editor: CellEditor | null = null;
   #editorLoading: Promise<void> | null = null;
   /** Keys typed into the static code while the editor loads, replayed into it once mounted. */
@@ -189,6 +191,22 @@ export class LiveCell {
     this.#view.setError('later', message);
   }
 
+  /** The names this cell reads, as it is defined now. */
+  get inputs(): readonly string[] {
+    return this.#inputs;
+  }
+
+  /**
+   * A widget set this cell's value (the dt field of a simulator whose dt came
+   * from here): the cell becomes `name = value`, run as the reader's edit.
+   */
+  setFromWidget(value: number): void {
+    const name = this.name;
+    if (!name) return;
+    this.#showDraft(`${name} = ${value}`);
+    void this.run();
+  }
+
   /** Another tab saved (or removed) this cell's edit. */
   externalChange(edit: SavedEdit | null): void {
     if (!edit || edit.draft === this.#draft) return;
@@ -263,6 +281,7 @@ export class LiveCell {
       this.#view.setError('later', null);
       this.#notebook.define(this.#variable, spec, definition);
       this.#running = source;
+      this.#inputs = spec.inputs;
       this.#updateStatus();
       return true;
     } catch (error) {
@@ -282,6 +301,7 @@ export class LiveCell {
       this.#view.setError('later', null);
       this.#notebook.define(this.#variable, spec, definition);
       this.#running = this.#view.originalSource;
+      this.#inputs = spec.inputs;
       this.#updateStatus();
     } catch (error) {
       this.#view.setError('compile', formatError(error));

@@ -7,6 +7,7 @@ import { DataPanel } from '../data/data-panel.ts';
 import { Driver } from './driver.ts';
 import { Notices } from './notices.ts';
 import type { View } from './view.ts';
+import { offerToCell } from '../cells/widget-input.ts';
 
 /** What a simulator element offers scripts: its driver and the current simulation. */
 export interface SimulatorHandle {
@@ -60,7 +61,11 @@ export function mount(
       restart: () => driver.restart(),
       step: () => driver.step(),
       setSpeed: (s) => driver.setSpeed(s),
-      setDt: (dt) => driver.replace(make(dt)),
+      // The chapter's cell that gives dt, if there is one, takes the new value (and the widget is rebuilt from it),
+      // so that the chapter's checks and this widget use one dt; otherwise the widget changes its own.
+      setDt: (dt) => {
+        if (offerToCell(root, { name: 'dt', value: dt })) driver.replace(make(dt));
+      },
     },
     driver.speed,
     first.dt,
