@@ -82,7 +82,8 @@ describe('canonicalEquations(spec)', () => {
   });
 
   it('falls back to differences for a JS function it cannot translate, and says so', async () => {
-    const model = await canonicalEquations({ dof: 1, hamiltonian: '(t, x) => x[1]**2/2 + Math.min(x[0]**2/2, 100)' });
+    // A loop is beyond the translator (Math.min no longer is: min has exact derivative rules now).
+    const model = await canonicalEquations({ dof: 1, hamiltonian: '(t, x) => { let h = 0; for (const v of [x[1]**2/2, x[0]**2/2]) h += v; return h; }' });
     expect(model.route).toBe('js-stencil');
     expect(model.accuracy).toMatch(/5-point/);
     const x = Float64Array.of(1, 0);

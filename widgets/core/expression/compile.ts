@@ -1,7 +1,9 @@
 import type { MathNode } from 'mathjs';
 import { BuildTracker, throwIfAborted, type BuildControl } from '../build-control.ts';
 import { InputError } from '../errors.ts';
-import { SUPPORTED_FUNCTIONS } from './emit.ts';
+import { LOGICAL_OPERATORS, SUPPORTED_FUNCTIONS } from './emit.ts';
+
+const ARITHMETIC = new Set(['add', 'subtract', 'multiply', 'divide', 'unaryMinus', 'unaryPlus', 'pow']);
 import { evaluatorSource, fusedStepperSource, type RateExpressions } from './fused-stepper.ts';
 import { CONSTANTS, checkName, stateNames } from './names.ts';
 import { latexOf } from './latex.ts';
@@ -146,7 +148,14 @@ function prepare(
         const squares = f.args.map((a) => `(${a.toString()})^2`).join(' + ');
         return prepare(math, math.parse(`sqrt(${squares})`), names, aliases, paramNames);
       }
+      if ((name === 'min' || name === 'max') && f.args.length > 2) {
+        // min(a, b, c) = min(min(a, b), c): the emitter and the derivative rules take two arguments.
+        const nested = f.args.slice(1).reduce((acc, arg) => new math.FunctionNode(new math.SymbolNode(name), [acc, arg]), f.args[0]);
+        return prepare(math, nested, names, aliases, paramNames);
+      }
       if (!SUPPORTED_FUNCTIONS.has(name)) throw new InputError(`H calls ${name}(), which is not a supported function`);
+      const arity = name === 'min' || name === 'max' || name === 'atan2' ? 2 : 1;
+      if (f.args.length !== arity) throw new InputError(`H calls ${name}() with ${f.args.length} argument(s); it takes ${arity}`);
       return n;
     }
     if (n.type === 'SymbolNode') {
@@ -155,8 +164,13 @@ function prepare(
       if (alias) return new math.SymbolNode(alias);
       if (!known.has(name)) throw new InputError(`unknown name ${name} in H: give it a value as a parameter`);
     }
-    if (n.type !== 'ConstantNode' && n.type !== 'OperatorNode' && n.type !== 'ParenthesisNode' && n.type !== 'SymbolNode') {
-      throw new InputError(`H may use only arithmetic, functions, numbers and names, not ${n.toString()}`);
+    if (n.type === 'OperatorNode') {
+      const fn = (n as unknown as { fn: string }).fn;
+      if (!ARITHMETIC.has(fn) && !LOGICAL_OPERATORS.has(fn)) throw new InputError(`H may not use the operator ${(n as unknown as { op: string }).op}`);
+    }
+    const allowed = ['ConstantNode', 'OperatorNode', 'ParenthesisNode', 'SymbolNode', 'ConditionalNode'];
+    if (!allowed.includes(n.type)) {
+      throw new InputError(`H may use only arithmetic, comparisons, conditionals (c ? a : b), functions, numbers and names, not ${n.toString()}`);
     }
     return n;
   });

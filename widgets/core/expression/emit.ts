@@ -52,6 +52,11 @@ export class Emitter {
         return this.operator(node as unknown as OperatorLike);
       case 'FunctionNode':
         return this.call(node as unknown as FunctionLike);
+      case 'ConditionalNode': {
+        // Both branches are computed (they are plain numbers), and the condition picks one.
+        const c = node as unknown as { condition: MathNode; trueExpr: MathNode; falseExpr: MathNode };
+        return this.temp(`${this.emit(c.condition)} ? ${this.emit(c.trueExpr)} : ${this.emit(c.falseExpr)}`);
+      }
       default:
         throw new Error(`${node.type.replace(/Node$/, '').toLowerCase()} expressions are not supported in H`);
     }
@@ -83,8 +88,13 @@ export class Emitter {
         return this.emit(a);
       case 'pow':
         return this.power(a, b);
-      default:
+      case 'not':
+        return this.temp(`!${this.emit(a)}`);
+      default: {
+        const js = COMPARISONS[node.fn];
+        if (js) return this.temp(`${this.emit(a)} ${js} ${this.emit(b)}`);
         throw new Error(`the operator ${node.op} is not supported in H`);
+      }
     }
   }
 
@@ -139,6 +149,21 @@ export class Emitter {
   }
 }
 
+/** Comparisons and logic, as conditionals and min/max derivatives use them: JS booleans, numbers where mathjs's are. */
+const COMPARISONS: Record<string, string> = {
+  larger: '>',
+  smaller: '<',
+  largerEq: '>=',
+  smallerEq: '<=',
+  equal: '===',
+  unequal: '!==',
+  and: '&&',
+  or: '||',
+};
+
+/** Operators of comparison and logic, whose value is piecewise constant: derivative 0. */
+export const LOGICAL_OPERATORS: ReadonlySet<string> = new Set([...Object.keys(COMPARISONS), 'not']);
+
 interface OperatorLike {
   op: string;
   fn: string;
@@ -181,10 +206,11 @@ interface Template {
   length: number;
   code: (...args: string[]) => string;
 }
+const binary = (fn: string): Template => ({ length: 2, code: (a, b) => `Math.${fn}(${a}, ${b})` });
 const unary = (f: (a: string) => string): Template => ({ length: 1, code: (a) => f(a) });
 const math = (fn: string) => unary((a) => `Math.${fn}(${a})`);
 
-/** The functions an expression H may use, all of which mathjs can differentiate. */
+/** The functions an expression H may use: those mathjs can differentiate, and min, max, atan2 (see partials.ts). */
 const FUNCTIONS: Record<string, Template> = {
   sqrt: math('sqrt'),
   cbrt: math('cbrt'),
@@ -214,6 +240,10 @@ const FUNCTIONS: Record<string, Template> = {
   sech: unary((a) => `(1 / Math.cosh(${a}))`),
   csch: unary((a) => `(1 / Math.sinh(${a}))`),
   coth: unary((a) => `(1 / Math.tanh(${a}))`),
+  // Differentiated by partials.ts's own rules, not by mathjs.
+  min: binary('min'),
+  max: binary('max'),
+  atan2: binary('atan2'),
 };
 
 /** Names of functions H may call, for validation and for translating JS. */

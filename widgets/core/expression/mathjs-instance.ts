@@ -4,9 +4,11 @@
  * mathjs.ts, never directly.
  */
 import {
+  ConditionalNodeDependencies,
   ConstantNodeDependencies,
   create,
   derivativeDependencies,
+  FunctionNodeDependencies,
   OperatorNodeDependencies,
   parseDependencies,
   SymbolNodeDependencies,
@@ -21,4 +23,7 @@ export const math = create({
   SymbolNodeDependencies,
   OperatorNodeDependencies,
   ConstantNodeDependencies,
+  // To write the derivatives of min, max and conditionals (partials.ts).
+  ConditionalNodeDependencies,
+  FunctionNodeDependencies,
 });

@@ -1,12 +1,12 @@
 /**
- * The part of mathjs the expression route uses: parse, derivative and three
+ * The part of mathjs the expression route uses: parse, derivative and five
  * node constructors. Built with `create` from just those factories,
  * it bundles to about half of the whole library (100 kB gzip rather than
  * 190 kB), and it is loaded only when a model takes this route.
  */
 import type { MathJsInstance } from 'mathjs';
 
-export type MathJs = Pick<MathJsInstance, 'parse' | 'derivative' | 'SymbolNode' | 'OperatorNode' | 'ConstantNode'>;
+export type MathJs = Pick<MathJsInstance, 'parse' | 'derivative' | 'SymbolNode' | 'OperatorNode' | 'ConstantNode' | 'ConditionalNode' | 'FunctionNode'>;
 
 let instance: Promise<MathJs> | undefined;
 

@@ -1,5 +1,6 @@
 import type { MathNode } from 'mathjs';
 import { InputError } from '../errors.ts';
+import { LOGICAL_OPERATORS } from './emit.ts';
 import type { MathJs } from './mathjs.ts';
 
 interface Term {
@@ -77,10 +78,84 @@ function stateSymbols(node: MathNode, state: ReadonlySet<string>): Set<string> {
   return found;
 }
 
+/**
+ * mathjs's `derivative` knows neither min, max, atan2 nor conditionals and
+ * comparisons. Each such subexpression S is stood in for by a fresh symbol s
+ * (mathjs takes an unknown symbol for a constant), and the chain rule puts
+ * it back:
+ *     d/dx F(S(x), x) = ∂F/∂x + Σ ∂F/∂s · dS/dx,
+ * with dS/dx by the rules below, differentiating S's own arguments the same
+ * way. The rules are those of the pieces: where min picks a it has a's
+ * derivative; a comparison is piecewise constant, derivative 0.
+ */
 function differentiate(math: MathJs, node: MathNode, name: string): MathNode {
   try {
-    return math.derivative(node, name, { simplify: false });
+    return derivativeWith(math, node, name);
   } catch (error) {
+    if (error instanceof InputError) throw error;
     throw new InputError(`cannot differentiate H with respect to ${name}: ${(error as Error).message}`);
+  }
+}
+
+/** The stand-in symbols' prefix: `$` is no name a user can write. */
+const STAND_IN = '$piece';
+
+function isPiece(node: MathNode): boolean {
+  if (node.type === 'ConditionalNode') return true;
+  if (node.type === 'FunctionNode') return PIECEWISE.has((node as unknown as { fn: { name: string } }).fn.name);
+  if (node.type === 'OperatorNode') return LOGICAL_OPERATORS.has((node as unknown as { fn: string }).fn);
+  return false;
+}
+
+const PIECEWISE = new Set(['min', 'max', 'atan2']);
+
+function derivativeWith(math: MathJs, node: MathNode, name: string): MathNode {
+  const pieces: MathNode[] = [];
+  // The outermost pieces, each replaced by its stand-in; pieces inside them are met when they are differentiated.
+  const standIn = node.transform((n: MathNode, path: string) => {
+    if (path === 'fn' || !isPiece(n)) return n;
+    pieces.push(n);
+    return new math.SymbolNode(`${STAND_IN}${pieces.length - 1}`);
+  });
+  const variable = new math.SymbolNode(name);
+  let result = math.derivative(standIn, variable, { simplify: false }) as MathNode;
+  pieces.forEach((piece, i) => {
+    const d = pieceDerivative(math, piece, name);
+    if (d === undefined) return;
+    const outer = math.derivative(standIn, new math.SymbolNode(`${STAND_IN}${i}`), { simplify: false }) as MathNode;
+    result = new math.OperatorNode('+', 'add', [result, new math.OperatorNode('*', 'multiply', [outer, d])]);
+  });
+  if (pieces.length === 0) return result;
+  return result.transform((n: MathNode) => {
+    if (n.type !== 'SymbolNode') return n;
+    const m = /^\$piece(\d+)$/.exec((n as unknown as { name: string }).name);
+    return m ? pieces[Number(m[1])] : n;
+  });
+}
+
+/** dS/dx for a piece S; undefined when it is 0 (comparisons, logic). */
+function pieceDerivative(math: MathJs, piece: MathNode, name: string): MathNode | undefined {
+  const { OperatorNode, ConditionalNode } = math;
+  if (piece.type === 'OperatorNode') return undefined;
+  const d = (n: MathNode) => derivativeWith(math, n, name);
+  if (piece.type === 'ConditionalNode') {
+    const c = piece as unknown as { condition: MathNode; trueExpr: MathNode; falseExpr: MathNode };
+    return new ConditionalNode(c.condition, d(c.trueExpr), d(c.falseExpr));
+  }
+  const f = piece as unknown as { fn: { name: string }; args: MathNode[] };
+  const [a, b] = f.args;
+  switch (f.fn.name) {
+    case 'min':
+      return new ConditionalNode(new OperatorNode('<=', 'smallerEq', [a, b]), d(a), d(b));
+    case 'max':
+      return new ConditionalNode(new OperatorNode('>=', 'largerEq', [a, b]), d(a), d(b));
+    default: {
+      // atan2(y, x)' = (x·y' − y·x') / (x² + y²)
+      const [y, x] = [a, b];
+      const two = new math.ConstantNode(2);
+      const numerator = new OperatorNode('-', 'subtract', [new OperatorNode('*', 'multiply', [x, d(y)]), new OperatorNode('*', 'multiply', [y, d(x)])]);
+      const denominator = new OperatorNode('+', 'add', [new OperatorNode('^', 'pow', [x, two]), new OperatorNode('^', 'pow', [y, two])]);
+      return new OperatorNode('/', 'divide', [numerator, denominator]);
+    }
   }
 }

@@ -72,6 +72,7 @@ export class Tidy {
   private rewrite(node: MathNode): MathNode {
     if (node.type === 'ParenthesisNode') return this.tidy(contentOf(node));
     if (node.type === 'FunctionNode') return node.map((child: MathNode, path: string) => (path === 'fn' ? child : this.tidy(child)));
+    if (node.type === 'ConditionalNode') return node.map((child: MathNode) => this.tidy(child));
     if (node.type !== 'OperatorNode') return node;
     if (isSum(node)) return this.sum(node, false);
     if (isProduct(node)) return this.product(node);

@@ -7,10 +7,14 @@ import type { MathNode } from 'mathjs';
  * to overflow the stack at a few thousand terms.
  */
 
-/** The operands of a node: its arguments, or a parenthesis's content; a call's own name is not one. */
+/** The operands of a node: its arguments, a parenthesis's content, a conditional's three parts; a call's own name is not one. */
 export function childrenOf(node: MathNode): readonly MathNode[] {
   if (node.type === 'OperatorNode' || node.type === 'FunctionNode') return (node as unknown as { args: MathNode[] }).args;
   if (node.type === 'ParenthesisNode') return [(node as unknown as { content: MathNode }).content];
+  if (node.type === 'ConditionalNode') {
+    const c = node as unknown as { condition: MathNode; trueExpr: MathNode; falseExpr: MathNode };
+    return [c.condition, c.trueExpr, c.falseExpr];
+  }
   return [];
 }
 
