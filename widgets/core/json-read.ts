@@ -75,7 +75,10 @@ function isKind(v: JsonValue, kind: Kind): boolean {
 /** Checks meta against ExportMeta, so callers can trust the type they get back. */
 function checkMeta(v: JsonValue, line: number): ExportMeta {
   if (typeof v !== 'object' || v === null || Array.isArray(v)) throw new ParseError('meta must be an object', line);
+  // A dataset of sampled or gridded states says how to make them (initialSet) instead of listing them.
+  const described = typeof v.initialSet === 'object' && v.initialSet !== null;
   for (const [key, kind] of REQUIRED) {
+    if (key === 'initial' && described && !(key in v)) continue;
     if (!(key in v)) throw new ParseError(`meta.${key} is missing`, line);
     if (!isKind(v[key], kind)) throw new ParseError(`meta.${key} must be ${kind === 'numbers' ? 'an object of numbers' : `a ${kind}`}`, line);
   }
