@@ -13,7 +13,7 @@
  *           data-cell-hash="<sha256 of the source, 12 hex>" data-cell-spec="<CellSpec JSON>">
  *     <div class="cell-box">
  *       <div class="cell-editor"><pre class="cell-code"><code>…highlighted source…</code></pre></div>
- *       <div class="cell-toolbar">… [data-cell-reset] [data-cell-run]</div>
+ *       <div class="cell-toolbar">… [data-cell-add] [data-cell-reset] [data-cell-run]</div>
  *     </div>
  *     <div data-cell-notice hidden></div>
  *     <div data-cell-error hidden></div>
@@ -105,6 +105,7 @@ export function renderCell(source, id, analysis, output) {
         h('span', { className: ['cell-status'], dataCellStatus: '' }),
         h('span', { className: ['cell-activity'], dataCellActivity: '', ariaLive: 'polite' }),
         h('span', { className: ['cell-hint'] }, [text('Shift+Enter runs')]),
+        h('button', { type: 'button', className: ['cell-button'], dataCellAdd: '', title: 'Add a cell of your own below this one' }, [text('+ Cell')]),
         h('button', { type: 'button', className: ['cell-button'], dataCellReset: '', disabled: true }, [text('Reset')]),
         h('button', { type: 'button', className: ['cell-button', 'cell-run'], dataCellRun: '' }, [text('Run')]),
       ]),
@@ -186,10 +187,13 @@ function pageDataNode(data) {
 }
 
 /**
+ * Every cell fence under `parent`, in document order, with its source as the
+ * page gets it and its parse. Exported for the VS Code extension (vscode/),
+ * which finds and checks a chapter's cells exactly as the build does.
  * @param {import('mdast').Parent} parent
  * @param {Array<{ parent: import('mdast').Parent, index: number, source: string, analysis: ReturnType<typeof analyzeCell> }>} found
  */
-function collectCells(parent, found) {
+export function collectCells(parent, found) {
   parent.children.forEach((child, index) => {
     if (child.type === 'code' && isCellFence(child)) {
       const source = child.value.replace(/^\n+/, '').trimEnd();

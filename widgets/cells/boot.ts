@@ -16,7 +16,9 @@ import { downloadText } from '../data/download.ts';
 import { createLibrary, prefetchWidgets } from '../library.ts';
 import { createBuiltins } from './builtins.ts';
 import { blockedMessage, cellOfSource, recentCell, stackOf } from './cell-errors.ts';
-import { LiveCell } from './cell.ts';
+import type { LiveCell } from './cell.ts';
+import { ChapterCells } from './chapter.ts';
+import { PROVENANCE_EVENT, type ProvenanceRequest } from './provenance.ts';
 import { MathSnapshot, pageIntact, showPageBroken } from './integrity.ts';
 import { formatError } from './spec.ts';
 import { INPUT_EVENT, type WidgetInput } from './widget-input.ts';
@@ -48,9 +50,9 @@ function downloadEdits(cells: readonly LiveCell[]): void {
  * under the cell whose code it was, not only in the console.
  */
 function reportLaterErrors(cells: readonly LiveCell[]): void {
-  const byId = new Map(cells.map((cell) => [cell.id, cell]));
   const show = (source: string | null | undefined, message: string, guess = false): boolean => {
-    const cell = byId.get(cellOfSource(source) ?? (guess ? recentCell() : null) ?? '');
+    const id = cellOfSource(source) ?? (guess ? recentCell() : null);
+    const cell = cells.find((c) => c.id === id);
     cell?.showLaterError(message);
     return cell !== undefined;
   };
@@ -94,23 +96,13 @@ function boot(): void {
   const notebook = new Notebook(createBuiltins(root, createLibrary(page)));
   const math = new MathSnapshot();
   const scheduler = new CellScheduler(markReady, markComplete, (cell) => prefetchWidgets(cell.root));
-  const cells: LiveCell[] = [];
-  for (const element of root.querySelectorAll<HTMLElement>('[data-cell]')) {
-    try {
-      const cell: LiveCell = new LiveCell(new CellView(element), notebook, store, {
-        onFirstResult: () => scheduler.firstResult(cell),
-        onDefine: (spec) => scheduler.wantInputs(spec.inputs),
-        downloadEdits: () => downloadEdits(cells),
-        checkPage: () => ({ restored: math.restore(), intact: pageIntact(root) }),
-        pageBroken: showPageBroken,
-      });
-      cells.push(cell);
-      scheduler.add(cell);
-    } catch (error) {
-      // Markup the build did not produce (hand-edited HTML?): skip this cell, keep the others.
-      console.error(error);
-    }
-  }
+  const chapter: ChapterCells = new ChapterCells(root, store, notebook, scheduler, {
+    downloadEdits: () => downloadEdits(chapter.cells),
+    checkPage: () => ({ restored: math.restore(), intact: pageIntact(root) }),
+    pageBroken: showPageBroken,
+  });
+  chapter.build();
+  const { cells } = chapter;
   // A page being printed shows every cell's output.
   addEventListener('beforeprint', () => cells.forEach((cell) => scheduler.want(cell)));
   // Keystrokes typed just before the reader leaves are saved, not lost with the pending timer.
@@ -120,13 +112,16 @@ function boot(): void {
   });
   reportLaterErrors(cells);
   passWidgetInputs(root, cells);
+  // A data export asks what the reader changed on this page, to record it with the data.
+  root.addEventListener(PROVENANCE_EVENT, (event) => {
+    (event as CustomEvent<ProvenanceRequest>).detail.provenance = { page: location.pathname, cells: chapter.provenance() };
+  });
   // Another tab of this book saved an edit: the cell showing it hears of it.
-  const byKey = new Map(cells.map((cell) => [store.editKey(cell.id), cell]));
   addEventListener('storage', (event) => {
-    const cell = event.key ? byKey.get(event.key) : undefined;
+    const cell = event.key ? cells.find((c) => store.editKey(c.id) === event.key) : undefined;
     if (cell && event.storageArea === localStorage) cell.externalChange(store.parseEvent(event.newValue));
   });
-  scheduler.watch(cells);
+  scheduler.watch([...cells]);
 }
 
 boot();

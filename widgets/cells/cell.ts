@@ -42,6 +42,10 @@ export interface CellHooks {
   checkPage(): { restored: readonly string[]; intact: boolean };
   /** The chapter is gone from the page because of this cell's code. */
   pageBroken(label: string): void;
+  /** The reader asked for a cell of their own below this one. */
+  addCellAfter(): void;
+  /** The reader deleted this cell (one they had added). */
+  deleteCell(): void;
 }
 
 /** After the reader's code has shown a result, the page must stay responsive this long to count as having survived it. */
@@ -160,8 +164,31 @@ export class LiveCell {
     else this.#drafts.changed(source);
   }
 
-  /** Back to the chapter's original. Undoable in the editor with Ctrl+Z. */
+  /** A cell the reader added rather than one of the chapter's. */
+  get added(): boolean {
+    return this.#view.added;
+  }
+
+  /** Puts the cursor in the cell's editor, once mounted. */
+  focus(): void {
+    this.#editor?.focus();
+  }
+
+  /** Takes the cell off the page: its definition, its markup and what was saved of it. */
+  dispose(): void {
+    if (this.#survival) clearTimeout(this.#survival.timer);
+    this.#drafts.survived();
+    this.#drafts.forget();
+    this.#notebook.remove(this.#variable);
+    this.#view.root.remove();
+  }
+
+  /** Back to the chapter's original (for an added cell: delete it). Undoable in the editor with Ctrl+Z. */
   reset(): void {
+    if (this.added) {
+      this.#hooks.deleteCell();
+      return;
+    }
     this.#showDraft(this.#view.originalSource);
     this.#closeOffer();
     this.#drafts.ran(this.#view.originalSource);
@@ -262,6 +289,7 @@ export class LiveCell {
     });
     this.#view.runButton.addEventListener('click', () => void this.run());
     this.#view.resetButton.addEventListener('click', () => this.reset());
+    this.#view.addButton?.addEventListener('click', () => this.#hooks.addCellAfter());
   }
 
   /**

@@ -117,6 +117,13 @@ export class DraftKeeper {
     this.#save(draft, this.#ran, true);
   }
 
+  /** Forgets the edit altogether (the cell is being deleted). */
+  forget(): void {
+    clearTimeout(this.#timer);
+    this.#pending = null;
+    this.#store.forget(this.#cellId);
+  }
+
   /** Marks the reader's code as running, until {@link survived}; see cell.ts. */
   markRunning(): void {
     this.#store.markRunning(this.#cellId);

@@ -94,6 +94,14 @@ export class Notebook {
     variable.define(spec.name, spec.inputs, supersedable(definition, controller.signal));
   }
 
+  /** Deletes a variable (a cell the reader deleted); cells that read its name see it undefined. */
+  remove(variable: Variable): void {
+    for (const [name, definer] of this.#definers) if (definer === variable) this.#definers.delete(name);
+    this.#current.get(variable)?.abort();
+    this.#current.delete(variable);
+    variable.delete();
+  }
+
   /** True when a cell (not a builtin, not an unknown name) defines `name`. */
   isCell(name: string): boolean {
     return this.#definers.has(name);

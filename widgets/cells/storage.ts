@@ -32,6 +32,18 @@ export interface SavedEdit {
   readonly tab: string;
 }
 
+/** A cell the reader added below one of the chapter's (or below another added cell). */
+export interface AddedCell {
+  readonly id: string;
+  /** The id of the cell it was added below. */
+  readonly after: string;
+}
+
+function isAddedCell(value: unknown): value is AddedCell {
+  return typeof value === 'object' && value !== null && typeof (value as AddedCell).id === 'string' && typeof (value as AddedCell).after === 'string'
+    && /^added-[0-9a-f]{8}$/.test((value as AddedCell).id);
+}
+
 /** Why a write did not take. */
 export type SaveFailure = 'unavailable' | 'full' | 'conflict';
 
@@ -136,6 +148,29 @@ export class EditStore {
   /** True when a cell's code was started on an earlier load and the page never got to say it survived. */
   wasRunning(cellId: string): boolean {
     return this.#get(this.#prefix && `${this.#prefix}:running:${cellId}`) !== null;
+  }
+
+  /** The cells the reader added to this page, in page order, each with the cell it follows. */
+  loadAdded(): AddedCell[] {
+    try {
+      const parsed: unknown = JSON.parse(this.#get(this.#prefix && `${this.#prefix}:added`) ?? '[]');
+      return Array.isArray(parsed) ? parsed.filter(isAddedCell) : [];
+    } catch {
+      return [];
+    }
+  }
+
+  /** Keeps the list of added cells; false when storage would not. */
+  saveAdded(cells: readonly AddedCell[]): boolean {
+    const key = this.#prefix && `${this.#prefix}:added`;
+    if (!key || !this.#storage) return false;
+    try {
+      if (cells.length) this.#storage.setItem(key, JSON.stringify(cells));
+      else this.#storage.removeItem(key);
+      return true;
+    } catch {
+      return false;
+    }
   }
 
   /** Every edit of this page, for a download when storage fails. */

@@ -47,6 +47,10 @@ export class CellView {
   readonly editorHost: HTMLElement;
   readonly runButton: HTMLButtonElement;
   readonly resetButton: HTMLButtonElement;
+  /** "+ Cell", absent in markup from an older build. */
+  readonly addButton: HTMLButtonElement | null;
+  /** A cell the reader added (its Reset deletes it). */
+  readonly added: boolean;
   readonly #output: HTMLElement;
   readonly #error: HTMLElement;
   readonly #notice: HTMLElement;
@@ -74,6 +78,8 @@ export class CellView {
     this.#originalCode = code?.cloneNode(true) ?? null;
     this.runButton = part(root, '[data-cell-run]');
     this.resetButton = part(root, '[data-cell-reset]');
+    this.addButton = root.querySelector('[data-cell-add]');
+    this.added = root.hasAttribute('data-cell-added');
     this.#output = part(root, '[data-cell-output]');
     this.#error = part(root, '[data-cell-error]');
     this.#notice = part(root, '[data-cell-notice]');
@@ -195,7 +201,7 @@ export class CellView {
   setEdited(edited: boolean, unrun = false): void {
     this.root.toggleAttribute('data-cell-edited', edited);
     this.root.toggleAttribute('data-cell-unrun', unrun);
-    this.resetButton.disabled = !edited;
+    this.resetButton.disabled = !edited && !this.added;
     this.#status.textContent = unrun ? 'not run yet' : edited ? 'edited' : '';
   }
 

@@ -36,6 +36,8 @@ export interface ExportMeta {
   version: string;
   /** Rows lost to the record's capacity before the export began. */
   dropped?: number;
+  /** Exports from the book: the cells the reader had changed or added on the page, and their code. */
+  provenance?: { page: string; cells: readonly { cell: string; source: string; added: boolean }[] };
   [key: string]: unknown;
 }
 

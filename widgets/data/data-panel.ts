@@ -1,3 +1,4 @@
+import { askProvenance } from '../cells/provenance.ts';
 import { button, field, h, setFieldError } from '../controls/dom.ts';
 import { parseBound } from '../controls/parse.ts';
 import type { Simulation } from '../core/simulation.ts';
@@ -114,7 +115,12 @@ export class DataPanel {
     const { record } = simulation;
     const name = exportName(selection.first, selection.last, format);
     if (format === 'csv') downloadText(csvParts(record, selection.from, selection.to), 'text/csv', name);
-    else downloadText(jsonParts(record, exportMeta(simulation), selection.from, selection.to), 'application/json', name);
+    else {
+      // A file made from a chapter the reader changed says so: which cells, and the code that ran.
+      const provenance = askProvenance(this.element);
+      const meta = provenance && provenance.cells.length ? { ...exportMeta(simulation), provenance } : exportMeta(simulation);
+      downloadText(jsonParts(record, meta, selection.from, selection.to), 'application/json', name);
+    }
     const dropped = record.dropped > 0 && selection.from === 0 ? ' (the record had already dropped its oldest rows)' : '';
     this.say(`Saved ${name}: ${selection.rows.toLocaleString('en')} rows${dropped}.`);
   }
