@@ -14,16 +14,13 @@
  * A fenced block marked ```` ```js cell ```` inside a chapter is a live code cell
  * (src/lib/remark-cells.mjs).
  */
-import { defineCollection, z } from 'astro:content';
+import { defineCollection } from 'astro:content';
 import { glob } from 'astro/loaders';
+import { chapterSchema } from './lib/chapter-schema';
 
 const chapters = defineCollection({
   loader: glob({ pattern: '**/*.mdx', base: './content' }),
-  schema: z.object({
-    title: z.string(),
-    description: z.string(),
-    order: z.number().int(),
-  }),
+  schema: chapterSchema,
 });
 
 export const collections = { chapters };
