@@ -1,0 +1,70 @@
+/**
+ * The open previews, one per chapter: opens one beside the editor (or
+ * reuses it), and gives the commands and the Test Explorer the preview a
+ * chapter's cells run in.
+ */
+import * as vscode from 'vscode';
+import type { CheckResult } from '../../shared/messages.ts';
+import type { ChapterIndex } from '../chapter-index.ts';
+import { ChapterPreview, PREVIEW_VIEW_TYPE } from './chapter-preview.ts';
+
+export class PreviewManager implements vscode.Disposable {
+  readonly #previews = new Map<string, ChapterPreview>();
+  readonly #extensionUri: vscode.Uri;
+  readonly #index: ChapterIndex;
+  readonly #diagnostics: vscode.DiagnosticCollection;
+  readonly #opened = new vscode.EventEmitter<ChapterPreview>();
+
+  /** Fires when a preview opens. */
+  readonly onDidOpen = this.#opened.event;
+
+  constructor(extensionUri: vscode.Uri, index: ChapterIndex, diagnostics: vscode.DiagnosticCollection) {
+    this.#extensionUri = extensionUri;
+    this.#index = index;
+    this.#diagnostics = diagnostics;
+  }
+
+  /** The preview in the active editor group's foreground, if any. */
+  active(): ChapterPreview | undefined {
+    return [...this.#previews.values()].find((preview) => preview.panel.active);
+  }
+
+  get(uri: vscode.Uri): ChapterPreview | undefined {
+    return this.#previews.get(uri.toString());
+  }
+
+  /** The chapter's preview, opened beside the active editor if it is not open; `focus` brings it forward. */
+  async open(uri: vscode.Uri, focus = true): Promise<ChapterPreview> {
+    // The preview runs the chapter's cells, which are code: not in a workspace the user has not trusted.
+    if (!vscode.workspace.isTrusted) throw new Error('the preview runs the chapter’s code, so it opens only in a trusted workspace');
+    const known = this.get(uri);
+    if (known) {
+      if (focus) known.panel.reveal(undefined, true);
+      return known;
+    }
+    const document = await vscode.workspace.openTextDocument(uri);
+    const title = `Preview ${uri.path.slice(uri.path.lastIndexOf('/') + 1)}`;
+    const panel = vscode.window.createWebviewPanel(PREVIEW_VIEW_TYPE, title, { viewColumn: vscode.ViewColumn.Beside, preserveFocus: true }, {
+      enableScripts: true,
+      // Widgets keep running (and their state) while the preview is behind another tab.
+      retainContextWhenHidden: true,
+      localResourceRoots: [vscode.Uri.joinPath(this.#extensionUri, 'dist')],
+    });
+    const preview = new ChapterPreview(document, panel, this.#extensionUri, this.#index, this.#diagnostics);
+    this.#previews.set(uri.toString(), preview);
+    preview.onDidClose(() => this.#previews.delete(uri.toString()));
+    this.#opened.fire(preview);
+    return preview;
+  }
+
+  /** Runs the theory checks of `cells` of a chapter in its preview (opened in the background if needed). */
+  async checks(uri: vscode.Uri, cells: readonly string[], timeoutMs: number): Promise<readonly CheckResult[]> {
+    const preview = await this.open(uri, false);
+    return preview.checks(cells, timeoutMs);
+  }
+
+  dispose(): void {
+    for (const preview of [...this.#previews.values()]) preview.dispose();
+    this.#opened.dispose();
+  }
+}

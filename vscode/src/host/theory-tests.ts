@@ -1,0 +1,124 @@
+/**
+ * The chapters' theory checks in the Test Explorer: one item per chapter
+ * that has checks, one child per cell that makes one. Running them runs
+ * the chapter in its preview (opened in the background if needed) and
+ * reads each check's readout: passed, failed with the measured and
+ * predicted values, skipped when the formula's regime does not hold, or
+ * errored with the cell's error or the reason a check has no verdict.
+ */
+import * as vscode from 'vscode';
+import { checkCells, verdictOf, type Verdict } from '../analyzer/theory-checks.ts';
+import type { ChapterIndex } from './chapter-index.ts';
+import type { PreviewManager } from './preview/preview-manager.ts';
+import { rangeOf } from './problem-diagnostics.ts';
+
+/** How long a chapter's checks may take to settle: models compile and simulations run first. */
+const CHECK_TIMEOUT_MS = 60_000;
+
+export class TheoryTests implements vscode.Disposable {
+  readonly controller: vscode.TestController;
+  readonly #index: ChapterIndex;
+  readonly #previews: PreviewManager;
+
+  constructor(index: ChapterIndex, previews: PreviewManager) {
+    this.#index = index;
+    this.#previews = previews;
+    this.controller = vscode.tests.createTestController('phasebook.theoryChecks', 'Phasebook theory checks');
+    this.controller.createRunProfile('Run theory checks', vscode.TestRunProfileKind.Run, (request, token) => this.#run(request, token), true);
+    this.controller.refreshHandler = async () => {
+      await index.ready;
+      this.#refreshAll();
+    };
+    index.onDidChange((uri) => this.#refresh(uri));
+    void index.ready.then(() => this.#refreshAll());
+  }
+
+  dispose(): void {
+    this.controller.dispose();
+  }
+
+  /** Runs the chapter's checks (those of `cellIds`, or all) in its preview: a verdict per cell id. */
+  async verdicts(uri: vscode.Uri, cellIds?: readonly string[]): Promise<Map<string, Verdict>> {
+    const analysis = this.#index.known(uri) ?? this.#index.analysisOf(await vscode.workspace.openTextDocument(uri));
+    const ids = cellIds ?? checkCells(analysis.cells).map(({ cell }) => cell.id);
+    const results = await this.#previews.checks(uri, ids, CHECK_TIMEOUT_MS);
+    return new Map(ids.map((id) => [id, verdictOf(results.find((r) => r.id === id) ?? { id, state: 'missing', checks: [] }, CHECK_TIMEOUT_MS)]));
+  }
+
+  #refreshAll(): void {
+    for (const { uri } of this.#index.chapters()) this.#refresh(uri);
+  }
+
+  /** The chapter's item and its checks, from its latest analysis (removed when it has none). */
+  #refresh(uri: vscode.Uri): void {
+    const analysis = this.#index.known(uri);
+    const checks = analysis ? checkCells(analysis.cells) : [];
+    const id = uri.toString();
+    if (!analysis || checks.length === 0) {
+      this.controller.items.delete(id);
+      return;
+    }
+    const label = analysis.frontMatter.title ?? uri.path.slice(uri.path.lastIndexOf('/') + 1);
+    const chapter = this.controller.items.get(id) ?? this.controller.createTestItem(id, label, uri);
+    chapter.label = label;
+    chapter.children.replace(
+      checks.map(({ cell, label: checkLabel }) => {
+        const item = this.controller.createTestItem(`${id}#${cell.id}`, checkLabel, uri);
+        item.range = rangeOf(analysis.lines, cell.start, cell.end);
+        item.description = cell.name ?? undefined;
+        return item;
+      }),
+    );
+    this.controller.items.add(chapter);
+  }
+
+  async #run(request: vscode.TestRunRequest, token: vscode.CancellationToken): Promise<void> {
+    const run = this.controller.createTestRun(request);
+    const byChapter = new Map<string, vscode.TestItem[]>();
+    const add = (item: vscode.TestItem) => {
+      if (request.exclude?.includes(item)) return;
+      if (item.children.size) item.children.forEach(add);
+      else if (item.parent) byChapter.set(item.parent.id, [...(byChapter.get(item.parent.id) ?? []), item]);
+    };
+    if (request.include) request.include.forEach(add);
+    else this.controller.items.forEach(add);
+    try {
+      for (const [chapter, items] of byChapter) {
+        if (token.isCancellationRequested) break;
+        items.forEach((item) => run.started(item));
+        const started = Date.now();
+        const cellIds = items.map((item) => item.id.slice(chapter.length + 1));
+        let verdicts: Map<string, Verdict>;
+        try {
+          verdicts = await this.verdicts(vscode.Uri.parse(chapter), cellIds);
+        } catch (error) {
+          // No preview (an untrusted workspace, a chapter that cannot be read): every check of the chapter errs, saying why.
+          items.forEach((item) => run.errored(item, new vscode.TestMessage(`The checks could not run: ${(error as Error).message}.`)));
+          continue;
+        }
+        const duration = Date.now() - started;
+        items.forEach((item, i) => {
+          const verdict = verdicts.get(cellIds[i])!;
+          run.appendOutput(`${item.label}\r\n${verdict.message.replace(/\n/g, '\r\n')}\r\n\r\n`, undefined, item);
+          if (verdict.outcome === 'passed') {
+            run.passed(item, duration);
+            return;
+          }
+          // Outside the formula's regime a check judges nothing; the output above says which condition fails.
+          if (verdict.outcome === 'skipped') {
+            run.skipped(item);
+            return;
+          }
+          const message = verdict.expected !== undefined && verdict.actual !== undefined
+            ? vscode.TestMessage.diff(verdict.message, verdict.expected, verdict.actual)
+            : new vscode.TestMessage(verdict.message);
+          if (item.uri && item.range) message.location = new vscode.Location(item.uri, item.range);
+          if (verdict.outcome === 'failed') run.failed(item, message, duration);
+          else run.errored(item, message, duration);
+        });
+      }
+    } finally {
+      run.end();
+    }
+  }
+}
