@@ -75,6 +75,8 @@ test('the stars have drawn their orbits and the readouts follow the simulation',
   await assertDrawn(page, '[data-widget="trajectory"], [data-widget="time-plot"]', 2);
 
   // The readout table: its time advances, and the energy and L stay at their initial values.
+  // Widgets out of view pause, so the reader's view goes to the stars first.
+  await page.locator('[data-widget="simulator"]').first().scrollIntoViewIfNeeded();
   const table = page.locator('table:has(caption)');
   const first = await table.locator('caption').textContent();
   await page.waitForFunction((before) => document.querySelector('table caption')?.textContent !== before, first, { timeout: 10_000 });

@@ -92,6 +92,8 @@ test('the frequency agrees with ω0 + (3β/2ω0 − 15α²/4ω0³)b² = 9.535, a
 test('the views have drawn, with the measured peak near the theory marker', async () => {
   // Once the record holds a few periods, the spectrum's strongest peak sits at the theory marker.
   const expected = formula(PARAMS, 1).omega / (2 * Math.PI);
+  // Widgets out of view pause: the reader looks at the oscillator while its record fills.
+  await page.locator('[data-widget="simulator"]').first().scrollIntoViewIfNeeded();
   await page.waitForFunction(
     (f) => Math.abs((document.querySelector('[data-widget="spectrum"]')?.peaks?.[0]?.frequency ?? 0) - f) < 0.05,
     expected,

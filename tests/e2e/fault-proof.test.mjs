@@ -40,6 +40,8 @@ test('a runaway loop stops after 2 s with an error naming its cell; the simulato
   await page.waitForSelector(`${SIM}[data-ready]`);
   await typeIntoCell(page, 'H0', 'H0 = { let n = 0; while (true) { n++; } }');
   assert.match(await waitForError(page, 'H0', /loop/), /^RuntimeError: a loop in cell H0 ran for more than 2 s without finishing and was stopped/);
+  // Widgets out of view pause; the reader looks at the simulator.
+  await page.evaluate((selector) => document.querySelector(selector).scrollIntoView({ block: 'center' }), SIM);
   const t0 = await simTime(page);
   await page.waitForTimeout(500);
   assert.ok((await simTime(page)) > t0, 'the simulator kept running');

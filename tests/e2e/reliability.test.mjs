@@ -24,6 +24,7 @@ async function openPlayground() {
   await page.goto(`${site.origin}/playground/`);
   await cellsReady(page);
   await page.waitForSelector(`${SIM}[data-ready]`, { timeout: 30_000 });
+  await inView(page);
   return { page, ...watch };
 }
 
@@ -59,6 +60,7 @@ const markOld = (page) => page.evaluate((selector) => document.querySelector(sel
 
 /** Waits for a simulator created after markOld, drawn and satisfying `check` (run in the page on its handle). */
 async function waitForNewWidget(page, check = 'true', timeout = 20_000) {
+  await inView(page);
   await page.waitForFunction(
     ({ selector, check }) => {
       const el = document.querySelector(selector);
@@ -70,8 +72,15 @@ async function waitForNewWidget(page, check = 'true', timeout = 20_000) {
   );
 }
 
+/** Brings the simulator into view: one out of view pauses until it is seen. */
+async function inView(page) {
+  await page.waitForSelector(SIM, { timeout: 20_000 });
+  await page.evaluate((selector) => document.querySelector(selector)?.scrollIntoView({ block: 'center' }), SIM);
+}
+
 /** Resolves when simulated time has moved on by `dt` from `from`. */
-function waitForTime(page, from, dt = 0.05, timeout = 10_000) {
+async function waitForTime(page, from, dt = 0.05, timeout = 10_000) {
+  await inView(page);
   return page.waitForFunction(
     ({ selector, target }) => document.querySelector(selector)?.simulator.simulation.t >= target,
     { selector: SIM, target: from + dt },

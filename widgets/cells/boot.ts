@@ -18,6 +18,7 @@ import { createBuiltins } from './builtins.ts';
 import { blockedMessage, cellOfSource, recentCell, stackOf } from './cell-errors.ts';
 import type { LiveCell } from './cell.ts';
 import { ChapterCells } from './chapter.ts';
+import { watchScrollables } from './scrollables.ts';
 import { PROVENANCE_EVENT, type ProvenanceRequest } from './provenance.ts';
 import { MathSnapshot, pageIntact, showPageBroken } from './integrity.ts';
 import { formatError } from './spec.ts';
@@ -112,6 +113,7 @@ function boot(): void {
   });
   reportLaterErrors(cells);
   passWidgetInputs(root, cells);
+  watchScrollables(root);
   // A data export asks what the reader changed on this page, to record it with the data.
   root.addEventListener(PROVENANCE_EVENT, (event) => {
     (event as CustomEvent<ProvenanceRequest>).detail.provenance = { page: location.pathname, cells: chapter.provenance() };

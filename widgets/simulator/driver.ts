@@ -44,8 +44,10 @@ const clock = (): number => performance.now();
  * Runs a simulation in real time on requestAnimationFrame: each frame
  * integrates the steps real time asks for within a time budget (see
  * frame-budget.ts), then asks every view to draw what is new. It computes
- * nothing while paused, while the tab is hidden, or while its element is
- * off the page, and pauses with the error on a blow-up.
+ * nothing while paused, while the tab is hidden, while its element is off
+ * the page or scrolled out of view (so a page whose widgets are out of
+ * sight goes idle; they resume, where they were, when scrolled back), and
+ * pauses with the error on a blow-up.
  */
 export class Driver {
   playing = false;
@@ -60,6 +62,9 @@ export class Driver {
   private readonly budget: Budget;
   private readonly listeners = new Map<keyof DriverEvents, Set<(value: never) => void>>();
   private readonly onVisibility = (): void => this.visibilityChanged();
+  /** False while the element is scrolled out of view (see the class comment). */
+  private inView = true;
+  private readonly viewObserver: IntersectionObserver | null;
 
   constructor(
     public simulation: Simulation,
@@ -70,6 +75,12 @@ export class Driver {
     this.budget = options.budget ?? DEFAULT_BUDGET;
     views.forEach((v) => v.setPlaying?.(false));
     document.addEventListener('visibilitychange', this.onVisibility);
+    const element = options.element;
+    this.viewObserver =
+      element && typeof IntersectionObserver !== 'undefined'
+        ? new IntersectionObserver(([entry]) => this.viewChanged(entry.isIntersecting), { rootMargin: '20% 0px' })
+        : null;
+    if (element) this.viewObserver?.observe(element);
   }
 
   /** Subscribes to an event; returns the unsubscribe. */
@@ -151,6 +162,7 @@ export class Driver {
     this.playing = false;
     if (this.raf) cancelAnimationFrame(this.raf);
     document.removeEventListener('visibilitychange', this.onVisibility);
+    this.viewObserver?.disconnect();
     this.views.forEach((v) => v.dispose());
     this.emit('dispose', undefined);
     this.listeners.clear();
@@ -169,6 +181,16 @@ export class Driver {
   private schedule(): void {
     if (this.disposed || this.raf || document.visibilityState === 'hidden') return;
     this.raf = requestAnimationFrame((now) => this.frame(now));
+  }
+
+  private viewChanged(inView: boolean): void {
+    if (inView === this.inView) return;
+    this.inView = inView;
+    if (inView && this.playing) {
+      // Resume where it was: the time out of view is not owed.
+      this.last = NaN;
+      this.schedule();
+    }
   }
 
   private visibilityChanged(): void {
@@ -212,8 +234,8 @@ export class Driver {
     this.drawNow(steps, integrateMs);
     if (this.simulation.error) this.pause();
     if (this.playing) {
-      if (this.attached()) this.schedule();
-      else this.waitForAttach();
+      if (!this.attached()) this.waitForAttach();
+      else if (this.inView) this.schedule();
     }
   }
 

@@ -118,7 +118,10 @@ export function mount(
   views.forEach((v) => v.reset(first));
   transport.setPlaying(false, false);
   driver.requestDraw();
-  if (options.autoplay !== false) driver.play();
+  // A reader whose system asks for reduced motion starts each simulator themselves.
+  const reducedMotion = typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
+  if (reducedMotion) root.dataset.reducedMotion = '';
+  if (options.autoplay !== false && !reducedMotion) driver.play();
 
   root.simulator = {
     driver,
