@@ -22,6 +22,9 @@ const HAS_NUMPY = pythonHas('numpy');
 const HAS_PYARROW = pythonHas('pyarrow');
 const TOLERANCE = 1e-12;
 
+// The first run of a model compiles it with mathjs; on a busy machine that alone can take seconds.
+vi.setConfig({ testTimeout: 30_000 });
+
 let dir: string;
 let stderr: string[];
 let stdout: string[];

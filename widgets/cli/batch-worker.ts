@@ -36,10 +36,13 @@ async function serve(): Promise<void> {
     port.postMessage({ id: -1, error: errorAsData(error) });
     return;
   }
-  port.on('message', (task: Task) => {
+  port.on('message', (message: Task | { recycle: ArrayBuffer }) => {
+    if ('recycle' in message) return runner.recycle(message.recycle);
+    const task = message;
     try {
       const result = runner.runWhole(task);
-      port.postMessage(result, result.data ? [result.data.buffer as ArrayBuffer] : []);
+      const payload = result.data ?? result.text;
+      port.postMessage(result, payload ? [payload.buffer as ArrayBuffer] : []);
     } catch (error) {
       port.postMessage({ id: task.id, error: errorAsData(error) });
     }

@@ -11,6 +11,8 @@ import { TaskRunner, type Task, type TaskResult, type TaskSetup } from './datase
 
 export interface Executor {
   run(task: Task): Promise<TaskResult>;
+  /** hands back a result's buffer once written, to be filled again */
+  recycle(data: Float64Array | Uint8Array): void;
   /** stops at once, abandoning any task under way */
   close(): Promise<void>;
 }
@@ -49,6 +51,7 @@ export function localExecutor(model: Model, setup: TaskSetup, signal: AbortSigna
       }
       return runner.end(task, out, steps);
     },
+    recycle: (data) => runner.recycle(data.buffer as ArrayBuffer),
     async close() {},
   };
 }
@@ -75,9 +78,10 @@ function workerScript(): { url: URL; eval: false } | { code: string; eval: true 
 /** A worker thread running tasks one at a time. */
 export function workerExecutor(init: WorkerInit): Executor {
   const script = workerScript();
+  const { execArgv, resourceLimits } = workerFlags(process.execArgv);
   const worker = script.eval
-    ? new Worker(script.code, { eval: true, workerData: init })
-    : new Worker(script.url, { workerData: init });
+    ? new Worker(script.code, { eval: true, workerData: init, execArgv, resourceLimits })
+    : new Worker(script.url, { workerData: init, execArgv, resourceLimits });
   const pending = new Map<number, { resolve: (r: TaskResult) => void; reject: (e: Error) => void }>();
   let failure: Error | undefined;
   const failAll = (error: Error) => {
@@ -103,9 +107,33 @@ export function workerExecutor(init: WorkerInit): Executor {
         worker.postMessage(task);
       });
     },
+    recycle(data) {
+      if (!failure) worker.postMessage({ recycle: data.buffer }, [data.buffer as ArrayBuffer]);
+    },
     async close() {
       failure ??= new Error('the worker was stopped');
       await worker.terminate();
     },
   };
+}
+
+/** A worker's young generation, in MB. */
+const YOUNG_MB = 6;
+
+/**
+ * Node's flags as a worker takes them: a worker refuses V8's heap flags and
+ * --input-type, so a heap cap (--max-old-space-size) becomes the worker's
+ * own resource limit, and the rest pass on.
+ */
+export function workerFlags(flags: readonly string[]): { execArgv: string[]; resourceLimits: { maxOldGenerationSizeMb?: number; maxYoungGenerationSizeMb?: number } } {
+  const execArgv: string[] = [];
+  // A worker's garbage is short-lived (a line of text, a task's numbers): a small young generation collects it as
+  // often as needed, where V8's default lets it grow to 48 MB per thread and the process's memory with it.
+  const resourceLimits: { maxOldGenerationSizeMb?: number; maxYoungGenerationSizeMb?: number } = { maxYoungGenerationSizeMb: YOUNG_MB };
+  for (const flag of flags) {
+    const heap = /^--max[-_]old[-_]space[-_]size=(\d+)$/.exec(flag);
+    if (heap) resourceLimits.maxOldGenerationSizeMb = Number(heap[1]);
+    else if (!/^--(input-type|max[-_]semi[-_]space[-_]size|stack[-_]size)\b/.test(flag)) execArgv.push(flag);
+  }
+  return { execArgv, resourceLimits };
 }

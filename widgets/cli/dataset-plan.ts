@@ -18,8 +18,18 @@
 import type { BlockOrder } from './formats/dataset-shape.ts';
 import type { Task } from './dataset-task.ts';
 
-/** About 4 MB of numbers per task: big enough that a task costs far more than its message, small enough for flat memory. */
-export const BLOCK_VALUES = 1 << 19;
+/**
+ * About 1 MB of numbers per task: a task costs far more than its message
+ * (tens of microseconds) unless every sample is a step, and the few tasks
+ * held while they wait their turn stay small beside the process itself.
+ */
+export const BLOCK_VALUES = 1 << 17;
+/**
+ * Numbers per task whose rows go out as text: their string (about 20 bytes a
+ * number, and more while it is built) lives on the JS heap, and a few tasks
+ * wait their turn at once, so a task stays near a megabyte of text.
+ */
+export const TEXT_BLOCK_VALUES = 1 << 16;
 
 export interface PlanShape {
   first: number;
@@ -39,7 +49,7 @@ export interface Plan {
   seq(run: number, chunk: number): number;
 }
 
-export function planTasks(shape: PlanShape, order: BlockOrder, workers: number, timeChunkRows: number): Plan {
+export function planTasks(shape: PlanShape, order: BlockOrder, workers: number, timeChunkRows: number, blockValues = BLOCK_VALUES): Plan {
   const { first, count, samples, width } = shape;
   let batch: number;
   let chunkRows: number;
@@ -52,14 +62,14 @@ export function planTasks(shape: PlanShape, order: BlockOrder, workers: number, 
     runs = Math.min(Math.max(1, workers), count);
     batch = 0;
     chunkRows = Math.max(1, timeChunkRows);
-  } else if (samples * width <= BLOCK_VALUES) {
-    const fits = Math.max(1, Math.floor(BLOCK_VALUES / (samples * width)));
+  } else if (samples * width <= blockValues) {
+    const fits = Math.max(1, Math.floor(blockValues / (samples * width)));
     batch = Math.max(1, Math.min(fits, Math.ceil(count / (8 * Math.max(1, workers)))));
     chunkRows = samples;
     runs = Math.ceil(count / batch);
   } else {
     batch = 1;
-    chunkRows = Math.max(1, Math.floor(BLOCK_VALUES / width));
+    chunkRows = Math.max(1, Math.floor(blockValues / width));
     runs = count;
   }
   const chunks = Math.max(1, Math.ceil(samples / chunkRows));

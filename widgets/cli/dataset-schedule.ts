@@ -28,7 +28,7 @@ export async function schedule(plan: Plan, executors: readonly Executor[], optio
   const { ahead, write, signal } = options;
   let nextRun = 0;
   let nextWrite = 0;
-  const held = new Map<number, TaskResult>();
+  const held = new Map<number, { result: TaskResult; from: Executor }>();
   let waiters: (() => void)[] = [];
   let failure: unknown;
   const wake = () => {
@@ -38,10 +38,12 @@ export async function schedule(plan: Plan, executors: readonly Executor[], optio
   };
   const drain = () => {
     while (held.has(nextWrite)) {
-      const result = held.get(nextWrite)!;
+      const { result, from } = held.get(nextWrite)!;
       held.delete(nextWrite);
       write(plan.task(nextWrite), result);
       options.done?.(result);
+      const payload = result.data ?? result.text;
+      if (payload) from.recycle(payload);
       nextWrite++;
     }
     wake();
@@ -70,7 +72,7 @@ export async function schedule(plan: Plan, executors: readonly Executor[], optio
         }
         const result = await executor.run(plan.task(id));
         check();
-        held.set(id, result);
+        held.set(id, { result, from: executor });
         drain();
       }
       if (fixed !== undefined) return;

@@ -9,7 +9,7 @@ import { BatchRun } from '../core/dataset/batch-run.ts';
 import { fillInitial, type InitialSet } from '../core/dataset/initial-set.ts';
 import { everyKSteps, listedTimes, type SampleTimes } from '../core/dataset/sample-times.ts';
 import type { Model } from '../core/types.ts';
-import { formatRows, type TextFormat } from './formats/text-rows.ts';
+import { formatRows, textCapacity, type TextFormat } from './formats/text-rows.ts';
 
 /** How sample times are made, as data a worker can receive. */
 export type TimesSpec = { kind: 'every'; t0: number; dt: number; steps: number; every: number } | { kind: 'list'; t0: number; dt: number; times: number[] };
@@ -42,7 +42,8 @@ export interface Task {
 export interface TaskResult {
   id: number;
   data?: Float64Array;
-  text?: string;
+  /** the rows as CSV or JSON bytes */
+  text?: Uint8Array;
   /** steps taken for this chunk, summed over its trajectories */
   steps: number;
 }
@@ -51,6 +52,8 @@ export interface TaskResult {
 export class TaskRunner {
   private readonly runs = new Map<number, BatchRun>();
   private readonly times: SampleTimes;
+  /** Buffers of results already written, to be filled again: a run allocates no memory per task once it is going. */
+  private readonly spare: ArrayBuffer[] = [];
 
   constructor(
     private readonly model: Model,
@@ -77,7 +80,15 @@ export class TaskRunner {
   /** A buffer for the task's rows, and how wide a row is. */
   begin(task: Task): { out: Float64Array; width: number; run: BatchRun } {
     const run = this.batch(task);
-    return { out: new Float64Array(task.count * (task.rowTo - task.rowFrom) * run.width), width: run.width, run };
+    const n = task.count * (task.rowTo - task.rowFrom) * run.width;
+    const i = this.spare.findIndex((b) => b.byteLength >= 8 * n);
+    const out = i >= 0 ? new Float64Array(this.spare.splice(i, 1)[0], 0, n) : new Float64Array(n);
+    return { out, width: run.width, run };
+  }
+
+  /** Takes back the buffer of a result that has been written. */
+  recycle(buffer: ArrayBuffer): void {
+    if (this.spare.length < 4 && buffer.byteLength > 0) this.spare.push(buffer);
   }
 
   /** Produces `rows` more rows of the task, from row `done` of it, into `out`. */
@@ -96,7 +107,13 @@ export class TaskRunner {
     const text = this.setup.text;
     if (!text) return { id: task.id, data: out, steps };
     const block = { first: task.first, count: task.count, rowFrom: task.rowFrom, rowTo: task.rowTo, data: out };
-    return { id: task.id, text: formatRows(text.format, block, run.width, text.numbered), steps };
+    const need = textCapacity(block, run.width);
+    const i = this.spare.findIndex((b) => b.byteLength >= need);
+    const into = i >= 0 ? new Uint8Array(this.spare.splice(i, 1)[0]) : undefined;
+    const bytes = formatRows(text.format, block, run.width, text.numbered, into);
+    // The numbers are done with: their buffer serves the next task.
+    this.recycle(out.buffer as ArrayBuffer);
+    return { id: task.id, text: bytes, steps };
   }
 
   /** The whole task at once, as a worker does it. */

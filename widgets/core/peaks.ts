@@ -78,8 +78,11 @@ function interpolate(s: Spectrum, k: number): Peak {
 
 const GOLDEN = (3 - Math.sqrt(5)) / 2;
 
-/** Local maxima examined at most when looking past sidelobes: each costs a refinement, O(N) per evaluation. */
-const MAX_CANDIDATES = 256;
+/**
+ * Local maxima examined at most, per peak asked for, when looking past
+ * sidelobes: a rejected one costs three DTFT sums, O(N) each.
+ */
+const CANDIDATES_PER_PEAK = 12;
 
 /**
  * Brent's method (Brent 1973, ch. 5) for the maximum of a unimodal g on
@@ -202,7 +205,7 @@ export function findPeaks(s: Spectrum, options: PeakOptions = {}): Peak[] {
   if (samples === undefined) return strongestMaxima(s.amplitude, top, floor).map((k) => interpolate(s, k));
   // With the samples at hand, sidelobes can be recognised and skipped, so look past them: a weak
   // harmonic may lie below dozens of the strong line's sidelobes (the README's 3ω at 0.4 % of ω).
-  const peaks = strongestMaxima(s.amplitude, MAX_CANDIDATES, floor).map((k) => interpolate(s, k));
+  const peaks = strongestMaxima(s.amplitude, CANDIDATES_PER_PEAK * top + 12, floor).map((k) => interpolate(s, k));
   if (peaks.length === 0) return peaks;
 
   if (samples.length !== s.samples) {
@@ -215,6 +218,8 @@ export function findPeaks(s: Spectrum, options: PeakOptions = {}): Peak[] {
   for (const p of peaks) {
     // Strongest first: once `top` lines are found, no weaker candidate can displace one by more than refinement's shift.
     if (lines.length >= top + 2) break;
+    // A sidelobe fails the shape test already at its interpolated place: three DTFT sums instead of a refinement's forty.
+    if (!isLine(y, s, p)) continue;
     const r = refine(y, weightSum, s, p, window, evaluations);
     if (isLine(y, s, r) && !lines.some((l) => Math.abs(l.frequency - r.frequency) < 0.5 * s.binWidth)) lines.push(r);
   }

@@ -9,7 +9,7 @@ import { spawnSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { unzipSync } from 'fflate';
 import { parse as parseNpy } from 'npyjs';
-import parquetWasm from 'parquet-wasm';
+import * as parquetWasm from 'parquet-wasm';
 import { tableFromIPC } from 'apache-arrow';
 
 /** Whether python3 can import every module named. */

@@ -34,8 +34,8 @@ export interface Block {
   rowTo: number;
   /** count × (rowTo − rowFrom) × width values; absent when the block comes as text */
   data?: Float64Array;
-  /** the rows already formatted by a worker (CSV or JSON lines) */
-  text?: string;
+  /** the rows already formatted by a worker (CSV or JSON lines), as bytes */
+  text?: Uint8Array;
 }
 
 /** A file being written from blocks, in its order. */

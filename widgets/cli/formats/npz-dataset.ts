@@ -80,13 +80,17 @@ export class NpzDatasetWriter implements DatasetWriter {
     this.zip.write(header);
   }
 
+  /** One buffer reused for every part of every block: the bytes are written before it is refilled. */
+  private scratch = new Float64Array(0);
+
   write(block: Block): void {
     const data = block.data!;
     const width = this.shape.columns.length;
     const rows = (block.rowTo - block.rowFrom) * block.count;
     for (const part of this.parts) {
       const n = part.to - part.from;
-      const values = new Float64Array(rows * n);
+      if (this.scratch.length < rows * n) this.scratch = new Float64Array(rows * n);
+      const values = this.scratch.subarray(0, rows * n);
       for (let r = 0, at = 0; r < rows; r++) {
         const row = r * width + part.from;
         for (let c = 0; c < n; c++) values[at++] = data[row + c];

@@ -36,10 +36,17 @@ export class TextDatasetWriter implements DatasetWriter {
     sink.write(format === 'csv' ? csvHeader(columns) : jsonHead(meta, columns));
   }
 
+  /** Formatting buffer for blocks that come as numbers (merge), reused. */
+  private scratch: Uint8Array | undefined;
+
   write(block: Block): void {
-    let text = block.text ?? formatRows(this.format, block, this.shape.columns.length, numbered(this.shape));
+    let text = block.text;
+    if (!text) {
+      text = formatRows(this.format, block, this.shape.columns.length, numbered(this.shape), this.scratch);
+      this.scratch = new Uint8Array(text.buffer);
+    }
     if (text.length === 0) return;
-    if (this.format === 'json' && this.first) text = text.slice(1);
+    if (this.format === 'json' && this.first) text = text.subarray(1);
     this.first = false;
     this.sink.write(text);
   }
