@@ -120,6 +120,21 @@ describe('signals', () => {
     expect(exit.stopMs).toBeLessThan(1000);
   }, 30_000);
 
+  it.each(['npz', 'csv'])('stops a dataset on worker threads (%s): status 130, no partial and no spill file left', async (format) => {
+    const args = ['simulate', '--hamiltonian', 'p^2/2 + q^2/2', '--dof', '1', '--sample', '2000', '--box', 'q=-1:1,p=-1:1', '--t-end', '200', '--every', '10', '--derivatives', '--workers', '2', '--force', '--format', format];
+    const run = start([...args, '--output', join(dir, `out.${format}`)]);
+    // An NPZ keeps its later arrays aside in spill files, partials too: all are there once x streams.
+    const ours = () => readdirSync(dir).filter((name) => /^\.out\.\w+(\.\w+)?\.phasebook-[0-9a-f]{8}-\d+-[0-9a-f]{32}\.partial$/.test(name));
+    await until(() => ours().length === (format === 'npz' ? 3 : 1), 'the partial files exist');
+    await new Promise((resolve) => setTimeout(resolve, 300));
+    run.child.kill('SIGINT');
+    const exit = await run.exited;
+    expect(exit.code).toBe(130);
+    expect(oneLine(exit.stderr)).toHaveLength(1);
+    expect(exit.stderr).toMatch(/^phasebook: stopped by SIGINT after \d+ of 2000 trajectories; \S*out\.\w+ was not written\n$/);
+    expect(readdirSync(dir)).toEqual([]);
+  }, 30_000);
+
   it('leaves a run writing to stdout to the default action: it dies of the signal at once', async () => {
     const run = start(LONG);
     await new Promise((resolve) => setTimeout(resolve, 1000));

@@ -32,4 +32,18 @@ describe('progressBar(stream, delayMs)', () => {
     expect(writes).toEqual([]);
     vi.useRealTimers();
   });
+
+  it('estimates the time left from the pace so far', () => {
+    vi.useFakeTimers({ toFake: ['performance'] });
+    const { stream, writes } = fakeStream(true);
+    const bar = progressBar(stream, 0);
+    vi.advanceTimersByTime(10_000);
+    bar.update(0.25, '250/1000 trajectories');
+    // A quarter in 10 s: three quarters more take 30 s.
+    expect(writes[0]).toMatch(/25%  250\/1000 trajectories  ETA 30 s/);
+    vi.advanceTimersByTime(90_000);
+    bar.update(0.5, '500/1000 trajectories');
+    expect(writes[1]).toMatch(/ETA 1 min 40 s/);
+    vi.useRealTimers();
+  });
 });
