@@ -43,14 +43,20 @@ export function stabilityChart(options: StabilityChartOptions, build: BuildOptio
   root.dataset.widget = 'stability-chart';
   const canvas = document.createElement('canvas');
   canvas.style.cursor = 'crosshair';
-  canvas.setAttribute('role', 'img');
-  canvas.setAttribute('aria-label', `Stability chart over ${x.param} and ${y.param}; click to choose a point`);
+  // Operable by keyboard as by pointer: arrows move the chosen point over the grid, Enter or Space applies it.
+  canvas.tabIndex = 0;
+  canvas.setAttribute('role', 'application');
+  canvas.setAttribute('aria-roledescription', 'stability chart');
+  canvas.setAttribute('aria-label', `Stability chart over ${x.param} and ${y.param}: arrow keys move the point (Shift for larger steps), Enter or Space chooses it; or click`);
+  const reading = document.createElement('p');
+  reading.className = 'pb-stability-reading';
+  reading.setAttribute('aria-live', 'polite');
   const status = document.createElement('figcaption');
   const progress = document.createElement('progress');
   progress.max = 1;
   progress.value = 0;
   status.append(progress, ' computing Floquet multipliers…');
-  root.append(canvas, status);
+  root.append(canvas, reading, status);
 
   const xs = axis(x, 120);
   const ys = axis(y, 60);
@@ -104,11 +110,43 @@ export function stabilityChart(options: StabilityChartOptions, build: BuildOptio
       const vx = mx.scale.invert(event.clientX - box.left);
       const vy = my.scale.invert(event.clientY - box.top);
       if (vx < x.from || vx > x.to || vy < y.from || vy > y.to) return;
-      chosen = [vx, vy];
-      draw();
-      options.onSelect?.({ [x.param]: vx, [y.param]: vy });
+      choose(vx, vy, true);
     };
   };
+
+  /** The growth rate at the grid point nearest (vx, vy), once the chart is computed. */
+  const rateAt = (vx: number, vy: number): number | null => {
+    if (!rates) return null;
+    const nearest = (values: number[], v: number) => values.reduce((best, w, k) => (Math.abs(w - v) < Math.abs(values[best] - v) ? k : best), 0);
+    return rates[nearest(ys, vy) * xs.length + nearest(xs, vx)];
+  };
+
+  /** Moves the point; `apply` hands it to the chapter (a click, Enter or Space), as a simulator's parameters. */
+  const choose = (vx: number, vy: number, apply: boolean) => {
+    chosen = [vx, vy];
+    draw();
+    const rate = rateAt(vx, vy);
+    const verdict = rate === null ? '' : rate > 0 ? `: unstable, growth rate ${rate.toPrecision(3)}` : ': stable';
+    reading.textContent = `${x.param} = ${vx.toPrecision(4)}, ${y.param} = ${vy.toPrecision(4)}${verdict}${apply ? ' (chosen)' : ''}`;
+    if (apply) options.onSelect?.({ [x.param]: vx, [y.param]: vy });
+  };
+
+  canvas.addEventListener('keydown', (event) => {
+    const [vx, vy] = chosen ?? [(x.from + x.to) / 2, (y.from + y.to) / 2];
+    const grid = event.shiftKey ? 10 : 1;
+    const dx = ((x.to - x.from) / (xs.length - 1)) * grid;
+    const dy = ((y.to - y.from) / (ys.length - 1)) * grid;
+    const clamp = (v: number, lo: number, hi: number) => Math.min(hi, Math.max(lo, v));
+    const moves: Record<string, [number, number]> = { ArrowLeft: [-dx, 0], ArrowRight: [dx, 0], ArrowDown: [0, -dy], ArrowUp: [0, dy] };
+    if (event.key in moves) {
+      event.preventDefault();
+      const [mxv, myv] = moves[event.key];
+      choose(clamp(vx + mxv, x.from, x.to), clamp(vy + myv, y.from, y.to), false);
+    } else if (event.key === 'Enter' || event.key === ' ') {
+      event.preventDefault();
+      choose(vx, vy, true);
+    }
+  });
 
   const worker = new Worker(new URL('./stability-worker.ts', import.meta.url), { type: 'module' });
   const fail = (message: string) => {
@@ -123,7 +161,7 @@ export function stabilityChart(options: StabilityChartOptions, build: BuildOptio
     if (m.rates) {
       rates = m.rates;
       const unstable = rates.filter((r) => r > 0).length;
-      status.textContent = `Shaded: unstable (growth rate by colour), ${unstable} of ${rates.length} points. Dashed: the first-order boundary. Click to choose ${x.param} and ${y.param}.`;
+      status.textContent = `Shaded: unstable (growth rate by colour), ${unstable} of ${rates.length} points. Dashed: the first-order boundary. Click, or use the arrow keys and Enter, to choose ${x.param} and ${y.param}.`;
       root.dataset.unstable = String(unstable);
       worker.terminate();
       draw();

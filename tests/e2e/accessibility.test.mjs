@@ -1,0 +1,83 @@
+/**
+ * Reading and using the book without a mouse, and with the system's
+ * accessibility settings: every control reachable and operable by keyboard,
+ * the stability chart included; reduced motion respected; boxes that scroll
+ * sideways reachable.
+ */
+import assert from 'node:assert/strict';
+import { after, before, test } from 'node:test';
+import { cell, cellsReady, openChapter, openSite } from './fixture.mjs';
+
+/** @type {Awaited<ReturnType<typeof openSite>>} */
+let site;
+before(async () => (site = await openSite()));
+after(() => site?.close());
+
+test('the stability chart is operable by keyboard: arrows move the point over the grid, Enter applies it', async () => {
+  const { page, problems } = await openChapter(site, '/parametric-resonance/');
+  const chart = page.locator('[data-widget="stability-chart"]');
+  await page.waitForSelector('[data-widget="stability-chart"][data-ready]', { timeout: 60_000 });
+  const explorer = cell(page, 'explorer').locator('[data-widget="simulator"]');
+  const params = () => explorer.evaluate((el) => Object.fromEntries(el.simulator.model.paramNames.map((n, i) => [n, el.simulator.model.params[i]])));
+  const before = await params();
+  await chart.locator('canvas').focus();
+  // The grid: γ over [15, 25] in 120 points, u over [0, 1] in 60 (the chapter's chart).
+  for (let i = 0; i < 3; i++) await page.keyboard.press('Shift+ArrowRight');
+  await page.keyboard.press('ArrowUp');
+  const reading = chart.locator('.pb-stability-reading');
+  assert.match((await reading.textContent()) ?? '', /^gamma = [\d.]+, u = [\d.]+: (stable|unstable, growth rate [\d.e-]+)$/);
+  // Moving is not choosing: the explorer keeps its parameters until Enter.
+  assert.deepEqual(await params(), before);
+  await page.keyboard.press('Enter');
+  await page.waitForFunction(
+    (old) => {
+      const el = document.querySelector('[data-cell="explorer"] [data-widget="simulator"]');
+      const gamma = el?.simulator.model.params[el.simulator.model.paramNames.indexOf('gamma')];
+      return gamma !== undefined && gamma !== old;
+    },
+    before.gamma,
+  );
+  const after = await params();
+  // Three large steps of ten grid cells, (25 − 15)/119 each, from the chosen γ; one cell of 1/59 up in u.
+  assert.ok(Math.abs(after.gamma - Math.min(25, before.gamma + (3 * 10 * 10) / 119)) < 1e-9, `γ = ${after.gamma}`);
+  assert.ok(Math.abs(after.u - (before.u + 1 / 59)) < 1e-9, `u = ${after.u}`);
+  assert.match((await reading.textContent()) ?? '', /\(chosen\)$/);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('with reduced motion asked for, simulators wait for Play', async () => {
+  const page = await site.context.newPage();
+  await page.emulateMedia({ reducedMotion: 'reduce' });
+  await page.goto(`${site.origin}/playground/`);
+  await cellsReady(page);
+  const sim = page.locator('[data-cell="sim"] [data-widget="simulator"]');
+  await sim.waitFor();
+  await sim.scrollIntoViewIfNeeded();
+  await page.waitForTimeout(500);
+  assert.equal(await sim.evaluate((el) => el.simulator.driver.playing), false);
+  assert.equal(await sim.evaluate((el) => el.simulator.simulation.t), 0);
+  await sim.locator('.pb-transport button').first().click();
+  await page.waitForFunction(() => document.querySelector('[data-cell="sim"] [data-widget="simulator"]').simulator.simulation.t > 0);
+  await page.close();
+});
+
+test('display math wider than a phone’s column can be reached by keyboard and says that it scrolls', async () => {
+  const page = await site.context.newPage();
+  await page.setViewportSize({ width: 360, height: 800 });
+  await page.goto(`${site.origin}/kepler/`);
+  await cellsReady(page);
+  const scrollables = await page.evaluate(() =>
+    [...document.querySelectorAll('.katex-display')].map((box) => ({
+      overflows: box.scrollWidth > box.clientWidth + 1,
+      focusable: box.tabIndex === 0,
+      label: box.getAttribute('aria-label'),
+    })),
+  );
+  assert.ok(scrollables.some((s) => s.overflows), 'some formula is wider than 360 px');
+  for (const s of scrollables) {
+    assert.equal(s.focusable, s.overflows);
+    if (s.overflows) assert.equal(s.label, 'Formula, scrolls sideways');
+  }
+  await page.close();
+});
