@@ -21,6 +21,14 @@ A vector field ((t, x, dxdt) => { dxdt[0] = x[1]; dxdt[1] = -x[0]; }) is
 integrated as written. Compiled models are cached in $PHASEBOOK_CACHE_DIR,
 else $XDG_CACHE_HOME/phasebook/models, else ~/.cache/phasebook/models.
 
+Many trajectories run in one process, on --workers threads (every core by
+default), with the same bytes out whatever their number. --energy E solves
+H = E for one momentum, the first (p, p0) unless --solve-for names another,
+within its --box range; a drawn point with no solution there is dropped and
+another drawn. --shard i/n computes the i-th of n slices of the set, and
+merge joins the slices into the file the whole run writes. reproduce runs a
+JSON, NPZ or Parquet file again from its meta and compares every number.
+
 A run of more than ${count(STEP_LIMIT)} steps or about ${byteSize(OUTPUT_LIMIT)} of output is refused unless
 --force is given. --output FILE appears only when complete; Ctrl-C (SIGINT) or
 SIGTERM removes the partial file and exits with status 130 or 143.
