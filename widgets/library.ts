@@ -56,7 +56,7 @@ export function createLibrary(page: PageContext): Record<string, unknown> {
     trajectoryView: lazy(() => import('./plots/trajectory-view.ts').then((m) => m.trajectoryView)),
     phasePortrait: lazy(() => import('./plots/phase-portrait.ts').then((m) => m.phasePortrait)),
     spectrumView: lazy(() => import('./plots/spectrum-view.ts').then((m) => m.spectrumView)),
-    /** theoryCheck({label, measured, predicted, tolerance, relative, unit, method, formula}) → element */
+    /** theoryCheck({label, measured, predicted, errors: {formula, integration, measurement}, validity, missing, relative, unit, method, formula}) → element */
     theoryCheck: lazy(() => import('./book/theory-check.ts').then((m) => m.theoryCheck)),
     /** equations(model) → H and Hamilton's equations, typeset */
     equations: lazy(() => typesetting().then((t) => t.equations)),
@@ -81,6 +81,8 @@ export function createLibrary(page: PageContext): Record<string, unknown> {
     crossings: lazy(() => analysis().then((m) => m.crossings)),
     meanPeriod: lazy(() => analysis().then((m) => m.meanPeriod)),
     floquet: lazy(() => analysis().then((m) => m.floquet)),
+    /** peakError(spectrum, lines, line) → how far leakage and refinement can move a spectral peak */
+    peakError: lazy(() => analysis().then((m) => m.peakError)),
     keplerOrbit: lazy(() => analysis().then((m) => m.keplerOrbit)),
     rutherfordAngle: lazy(() => analysis().then((m) => m.rutherfordAngle)),
     deflectionFrom: lazy(() => analysis().then((m) => m.deflectionFrom)),
