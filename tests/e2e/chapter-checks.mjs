@@ -1,14 +1,15 @@
 /**
  * Helpers shared by the chapter test files (chapter-*.test.mjs): opening a
  * chapter once per file, waiting for its widgets, reading and checking its
- * theory checks, and making sure its canvases have drawn.
+ * theory checks, editing a cell and waiting for the checks it re-runs, and
+ * making sure its canvases have drawn and that no NaN is shown.
  *
  * What each chapter asserts about its own physics (formulas, tolerances)
  * stays in its test file; only the page plumbing lives here.
  */
 import assert from 'node:assert/strict';
 import { after, before } from 'node:test';
-import { cell, openChapter, openSite } from './fixture.mjs';
+import { cell, openChapter, openSite, typeIntoCell } from './fixture.mjs';
 
 /** Selector of every theory-check widget. */
 export const THEORY_CHECK = '[data-widget="theory-check"]';
@@ -59,25 +60,34 @@ export async function widgetsReady(page, expected = {}) {
 }
 
 /**
- * Every theory check on the page, in page order: its data attributes, with
- * `measured`, `predicted` and `tolerance` as numbers. With `method`, each also
- * carries the text of its `.pb-measured` line (how it measured).
+ * The theory checks `all`, each as its data attributes with the numeric ones
+ * as numbers (NaN when absent) and its text; with `method`, also the text of
+ * its `.pb-measured` line. Runs in the page, so it refers to nothing outside.
+ * @param {HTMLElement[]} all
+ * @param {boolean} method
+ */
+function readChecks(all, method) {
+  const numeric = ['measured', 'predicted', 'tolerance', 'allowed', 'error', 'errorFormula', 'errorIntegration', 'errorMeasurement'];
+  return all.map((w) => {
+    const check = { ...w.dataset, text: w.textContent ?? '' };
+    for (const name of numeric) check[name] = name in w.dataset ? Number(w.dataset[name]) : NaN;
+    if (method) check.method = w.querySelector('.pb-measured')?.textContent ?? '';
+    return check;
+  });
+}
+
+/**
+ * Every theory check on the page, in page order: its data attributes (see
+ * widgets/book/theory-check.ts), with the numbers (measured, predicted,
+ * tolerance = the sum of the errors allowed, error = the difference as
+ * compared, errorFormula, errorIntegration, errorMeasurement) as numbers,
+ * NaN when absent, and its text. With `method`, each also carries the text
+ * of its `.pb-measured` line (how it measured).
  * @param {import('playwright-core').Page} page
  * @param {{ method?: boolean }} [options]
  */
 export function theoryChecks(page, { method = false } = {}) {
-  return page.$$eval(
-    THEORY_CHECK,
-    (all, method) =>
-      all.map((w) => ({
-        ...w.dataset,
-        measured: Number(w.dataset.measured),
-        predicted: Number(w.dataset.predicted),
-        tolerance: Number(w.dataset.tolerance),
-        ...(method ? { method: w.querySelector('.pb-measured')?.textContent ?? '' } : {}),
-      })),
-    method,
-  );
+  return page.$$eval(THEORY_CHECK, readChecks, method);
 }
 
 /**
@@ -90,25 +100,36 @@ export function theoryChecks(page, { method = false } = {}) {
 export async function theoryCheckIn(page, id, { wait = false } = {}) {
   const widget = cell(page, id).locator(THEORY_CHECK);
   if (wait) await widget.waitFor({ timeout: 30_000 });
-  return widget.evaluate((w) => ({
-    ...w.dataset,
-    measured: Number(w.dataset.measured),
-    predicted: Number(w.dataset.predicted),
-    tolerance: Number(w.dataset.tolerance),
-  }));
+  const [check] = await widget.evaluateAll(readChecks, false);
+  return check;
+}
+
+/**
+ * Asserts that a check's allowance is the sum of the error terms it names
+ * (absent terms count as 0), so that its verdict is exactly "the difference
+ * is inside the errors named".
+ */
+export function assertSumOfTerms(check) {
+  const terms = ['errorFormula', 'errorIntegration', 'errorMeasurement'].map((name) => check[name]).filter((v) => !Number.isNaN(v));
+  assert.ok(terms.length > 0, `no error terms: ${JSON.stringify(check)}`);
+  const sum = terms.reduce((a, b) => a + b, 0);
+  assert.ok(Math.abs(check.tolerance - sum) <= 1e-12 * Math.max(1, sum), `tolerance ${check.tolerance} is not the sum ${sum} of ${terms}`);
 }
 
 /**
  * The agreement a theory check claims, recomputed here from its own numbers:
- * `data-agrees` is 'true' and |measured − predicted| (divided by |predicted|
- * when the check is relative) is within its tolerance. With `relative`, also
- * asserts that the check is (true) or is not (false) relative.
- * @param {{ agrees: string, relative: string, measured: number, predicted: number, tolerance: number }} check
+ * its verdict is 'agrees', its allowance is the sum of the errors it names,
+ * and |measured − predicted| (divided by |predicted| when the check is
+ * relative) is within it. With `relative`, also asserts that the check is
+ * (true) or is not (false) relative.
+ * @param {{ agrees: string, verdict: string, relative: string, measured: number, predicted: number, tolerance: number }} check
  * @param {{ relative?: boolean }} [options]
  */
 export function assertAgrees(check, { relative } = {}) {
+  assert.equal(check.verdict, 'agrees', JSON.stringify(check));
   assert.equal(check.agrees, 'true', JSON.stringify(check));
   if (relative !== undefined) assert.equal(check.relative, String(relative));
+  assertSumOfTerms(check);
   const difference = Math.abs(check.measured - check.predicted);
   const error = check.relative === 'true' ? difference / Math.abs(check.predicted) : difference;
   assert.ok(error <= check.tolerance, JSON.stringify(check));
@@ -175,4 +196,62 @@ export async function assertLoadsClean(page, problems, counts) {
   await assertNoCellErrors(page);
   for (const [selector, n] of Object.entries(counts)) assert.equal(await page.locator(selector).count(), n, selector);
   assert.deepEqual(problems, []);
+}
+
+/**
+ * Replaces cell `id`'s text with `source` and runs it, as a reader does, then
+ * waits (up to `timeout` ms) until each cell in `checks` shows a theory check
+ * made after the edit, and returns those checks by cell, parsed like
+ * {@link theoryChecks}. A check cell that fails instead makes this throw with
+ * its error line, so a sweep point that breaks a cell says so.
+ * @param {import('playwright-core').Page} page
+ * @param {string} id
+ * @param {string} source
+ * @param {string[]} checks ids of the cells whose theory checks to wait for
+ * @param {{ timeout?: number }} [options]
+ */
+export async function editAndReadChecks(page, id, source, checks, { timeout = 60_000 } = {}) {
+  const selector = checks.map((c) => `[data-cell="${c}"] ${THEORY_CHECK}`).join(', ');
+  // Mark the checks on the page now; the ones made after the edit lack the mark.
+  await page.$$eval(selector, (all) => all.forEach((w) => (w.dataset.stale = '')));
+  await typeIntoCell(page, id, source);
+  const failed = await page.waitForFunction(
+    ([ids, kind]) => {
+      const states = ids.map((c) => {
+        const root = document.querySelector(`[data-cell="${c}"]`);
+        const error = root?.querySelector('[data-cell-error]');
+        if (error && error.offsetParent !== null && error.textContent) return `${c}: ${error.textContent}`;
+        const fresh = [...(root?.querySelectorAll(kind) ?? [])].filter((w) => !('stale' in w.dataset) && 'ready' in w.dataset);
+        return fresh.length > 0 && root.dataset.cellState !== 'pending' ? 'ok' : null;
+      });
+      if (states.some((s) => s === null)) return false;
+      return states.filter((s) => s !== 'ok').join('; ') || 'none';
+    },
+    [checks, THEORY_CHECK],
+    { timeout },
+  );
+  const errors = await failed.jsonValue();
+  if (errors !== 'none') throw new Error(`after ${id} = ${source}: ${errors}`);
+  const result = {};
+  for (const c of checks) result[c] = await cell(page, c).locator(THEORY_CHECK).evaluateAll(readChecks, false);
+  return result;
+}
+
+/**
+ * Asserts that no text a reader sees outside code says NaN or Infinity: an
+ * undefined value must say why instead.
+ * @param {import('playwright-core').Page} page
+ */
+export async function assertNoNaNShown(page) {
+  const shown = await page.evaluate(() => {
+    const hits = [];
+    const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+    for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+      const parent = node.parentElement;
+      if (!parent || parent.closest('pre, code, .cm-editor, script, style') || parent.offsetParent === null) continue;
+      if (/\bNaN\b|\bInfinity\b/.test(node.textContent ?? '')) hits.push(`${parent.closest('[data-cell]')?.getAttribute('data-cell') ?? '(text)'}: ${node.textContent}`);
+    }
+    return hits;
+  });
+  assert.deepEqual(shown, [], 'NaN or Infinity shown to the reader');
 }

@@ -28,7 +28,9 @@ function assertPeriod(check, omega0, theta0) {
   assertAgrees(check, { relative: true });
   const predicted = ((2 * Math.PI) / omega0) * (1 + theta0 ** 2 / 16);
   assert.ok(Math.abs(check.predicted - predicted) < 1e-12, `page ${check.predicted}, test ${predicted}`);
-  assert.ok(Math.abs(check.tolerance - (2 * 11 * theta0 ** 4) / 3072) < 1e-15);
+  // The formula's error: 11θ0⁴/3072 and the terms after it, each smaller by at most (θ0/π)², relative to the prediction.
+  const left = (11 * theta0 ** 4) / 3072 / (1 - (theta0 / Math.PI) ** 2) / (1 + theta0 ** 2 / 16);
+  assert.ok(Math.abs(check.errorFormula - left) < 1e-15, `page ${check.errorFormula}, test ${left}`);
 }
 
 test('the template runs live on the page: every cell, the simulator and the period check', async () => {

@@ -11,11 +11,11 @@ import { cell, typeIntoCell } from './fixture.mjs';
 
 const PARAMS = { omega0: 10, alpha: -2, beta: -3 };
 
-/** ω = ω0 + (3β/2ω0 − 15α²/4ω0³) b², and the check's allowance for the terms it leaves out. */
+/** ω = ω0 + (3β/2ω0 − 15α²/4ω0³) b², and the check's formula error: the b³ term and an estimate of the b⁴ term. */
 function formula({ omega0, alpha, beta }, b) {
   const omega2 = (3 * beta) / (2 * omega0) - (15 * alpha ** 2) / (4 * omega0 ** 3);
-  const tolerance = Math.abs(((2 * alpha * omega2) / omega0 ** 2) * b ** 3) + (omega2 * b ** 2) ** 2 / omega0;
-  return { omega: omega0 + omega2 * b ** 2, tolerance };
+  const neglected = Math.abs(((2 * alpha * omega2) / omega0 ** 2) * b ** 3) + (omega2 * b ** 2) ** 2 / omega0;
+  return { omega: omega0 + omega2 * b ** 2, neglected };
 }
 
 /**
@@ -54,17 +54,19 @@ let problems;
 
 function assertChecks(b) {
   return theoryChecks(page).then(([frequency, peakVsCrossings]) => {
-    const { omega, tolerance } = formula(PARAMS, b);
+    const { omega, neglected } = formula(PARAMS, b);
     const exact = exactOmega(PARAMS, b);
     assertAgrees(frequency);
     assert.equal(frequency.relative, 'false');
     assert.ok(Math.abs(frequency.predicted - omega) < 1e-12, `${frequency.predicted} vs ${omega}`);
-    assert.ok(Math.abs(frequency.tolerance - tolerance) < 1e-12);
-    // The spectral peak is within 5e-5 of the exact frequency, far inside the formula's allowance.
-    assert.ok(Math.abs(frequency.measured - exact) < 5e-5 * exact, `${frequency.measured} vs exact ${exact}`);
+    assert.ok(Math.abs(frequency.errorFormula - neglected) < 1e-12);
+    // The spectral peak is within its own stated errors (leakage, integration) of the exact frequency.
+    assert.ok(Math.abs(frequency.measured - exact) <= frequency.errorMeasurement + frequency.errorIntegration, `${frequency.measured} vs exact ${exact}`);
     assertAgrees(peakVsCrossings);
     assert.equal(peakVsCrossings.relative, 'true');
-    assert.equal(peakVsCrossings.tolerance, 1e-4);
+    // Two measurements of one frequency: no formula, no integrator error, only the measurements' own.
+    assert.equal(peakVsCrossings.errorFormula, 0);
+    assert.ok(peakVsCrossings.errorMeasurement > 0 && peakVsCrossings.errorMeasurement < 1e-4, String(peakVsCrossings.errorMeasurement));
     // The zero-crossing frequency is the exact one to about 1e-7.
     assert.ok(Math.abs(peakVsCrossings.predicted - exact) < 1e-6 * exact, `${peakVsCrossings.predicted} vs exact ${exact}`);
     return { frequency, exact };
@@ -85,7 +87,7 @@ test('the frequency agrees with ω0 + (3β/2ω0 − 15α²/4ω0³)b² = 9.535, a
   const { frequency, exact } = await assertChecks(1);
   assert.ok(Math.abs(frequency.predicted - 9.535) < 1e-12);
   assert.ok(Math.abs(exact - 9.538923) < 1e-6, `exact ${exact}`);
-  // The residual is 0.0039, ten times inside the allowance of 0.040.
+  // The residual is 0.0039, ten times inside the formula's error of 0.040.
   assert.ok(Math.abs(frequency.measured - frequency.predicted - 0.0039) < 1e-4);
 });
 

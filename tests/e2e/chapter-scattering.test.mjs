@@ -59,10 +59,13 @@ function assertChecks([orbit, formula], alpha) {
   assertAgrees(formula, { relative: false });
   const theta = rutherford(b, p, alpha, m);
   assert.ok(Math.abs(formula.predicted - theta) < 1e-12, `Rutherford: page ${formula.predicted}, test ${theta}`);
-  const expected = 1.5 * Math.abs(shortfall(x0, b, p, alpha, m));
-  assert.ok(Math.abs(formula.tolerance - expected) < 1e-12, `tolerance: page ${formula.tolerance}, test ${expected}`);
+  // The formula's error: the first-order shortfall of a start at x0, and the next order, smaller by
+  // |α|/r0E0 + |b/x0|.
+  const first = Math.abs(shortfall(x0, b, p, alpha, m));
+  const expected = first * (1 + Math.abs(alpha) / (Math.hypot(x0, b) * ((p * p) / (2 * m))) + Math.abs(b / x0));
+  assert.ok(Math.abs(formula.errorFormula - expected) < 1e-12, `formula error: page ${formula.errorFormula}, test ${expected}`);
   // the difference is real, not noise: the start at x0 = −20 costs most of the first-order estimate
-  assert.ok(Math.abs(formula.measured - formula.predicted) > 0.5 * (expected / 1.5));
+  assert.ok(Math.abs(formula.measured - formula.predicted) > 0.5 * first);
 }
 
 test('both deflection checks agree with formulas computed here; the beam and the figures are drawn', async () => {
