@@ -12,6 +12,7 @@ import { CellLenses, RUN_ALL, RUN_CELL } from './host/code-lens.ts';
 import { CellCompletion, TRIGGER_CHARACTERS } from './host/completion.ts';
 import { CellHover } from './host/hover.ts';
 import { NEW_CHAPTER, newChapter } from './host/new-chapter-command.ts';
+import { PREVIEW_VIEW_TYPE } from './host/preview/chapter-preview.ts';
 import { PreviewManager } from './host/preview/preview-manager.ts';
 import { TheoryTests } from './host/theory-tests.ts';
 import { isMdx } from './host/chapter-files.ts';
@@ -63,6 +64,7 @@ export function activate(context: vscode.ExtensionContext): PhasebookApi {
     vscode.commands.registerCommand('phasebook.openPreview', async (uri?: unknown) => void (await preview(uri, true))),
     vscode.commands.registerCommand(RUN_CELL, (uri: unknown, cell: string) => run(uri, cell)),
     vscode.commands.registerCommand(RUN_ALL, (uri: unknown) => run(uri, null)),
+    vscode.window.registerWebviewPanelSerializer(PREVIEW_VIEW_TYPE, { deserializeWebviewPanel: (panel, state) => previews.revive(panel, state) }),
     vscode.commands.registerCommand(NEW_CHAPTER, (args?: { title?: string }) => newChapter(index, args)),
   );
   return { index, previews, theoryTests };

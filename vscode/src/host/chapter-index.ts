@@ -16,6 +16,21 @@ import { toDiagnostic } from './problem-diagnostics.ts';
 /** How long typing must pause before a chapter is analysed again. */
 const TYPING_DELAY_MS = 250;
 
+/**
+ * The analysis of a text, never an exception: a chapter the analyzer cannot
+ * take (a bug of ours, not of the chapter) gets one problem saying so, and
+ * the other chapters and features carry on.
+ */
+function safeAnalysis(text: string): ChapterAnalysis {
+  try {
+    return analyzeChapter(text, builtins);
+  } catch (error) {
+    const empty = analyzeChapter('', builtins);
+    const message = `Phasebook could not analyse this file: ${(error as Error)?.message ?? String(error)}`;
+    return { ...empty, problems: [{ code: 'mdx-syntax', severity: 'error', message, start: 0, end: 0 }] };
+  }
+}
+
 interface Entry {
   readonly uri: vscode.Uri;
   /** The book (content/ folder) of a chapter; null for another MDX file. */
@@ -57,7 +72,7 @@ export class ChapterIndex implements vscode.Disposable {
   analysisOf(document: vscode.TextDocument): ChapterAnalysis {
     const known = this.#entries.get(document.uri.toString());
     if (known && known.version === document.version) return known.analysis;
-    return this.#set(document.uri, analyzeChapter(document.getText(), builtins), document.version).analysis;
+    return this.#set(document.uri, safeAnalysis(document.getText()), document.version).analysis;
   }
 
   /** The analysis of a file the index knows (a chapter, or an open MDX file). */
@@ -116,7 +131,7 @@ export class ChapterIndex implements vscode.Disposable {
       this.#remove(uri);
       return;
     }
-    this.#set(uri, analyzeChapter(text, builtins), null);
+    this.#set(uri, safeAnalysis(text), null);
     if (publish) this.#publish(uri);
   }
 

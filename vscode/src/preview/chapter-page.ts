@@ -67,6 +67,11 @@ export class ChapterPage {
     this.#scheduleReport();
   }
 
+  /** The line (from 0) of a cell's opening fence in the text last rendered. */
+  lineOf(id: string): number | undefined {
+    return this.#lines.get(id)?.line;
+  }
+
   /** Runs one cell (by id) or all, and brings it into view. */
   run(id: string | null): void {
     const cells = id === null ? [...this.#cells.values()] : [this.#cells.get(id)].filter((c) => c !== undefined);

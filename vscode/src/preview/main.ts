@@ -9,23 +9,26 @@ import { ScrollSync } from './scroll-sync.ts';
 import { followVsCodeTheme } from './theme.ts';
 import { prepareWorkers } from './workers.ts';
 
-declare function acquireVsCodeApi(): { postMessage(message: PreviewMessage): void };
+declare function acquireVsCodeApi(): { postMessage(message: PreviewMessage): void; setState(state: unknown): void };
 
 async function start(): Promise<void> {
   const vscode = acquireVsCodeApi();
   const post = (message: PreviewMessage) => vscode.postMessage(message);
   const article = document.querySelector<HTMLElement>('article[data-chapter]');
   if (!article) return;
+  // What VS Code gives back to restore this preview after a reload (PreviewManager.revive).
+  vscode.setState({ uri: article.dataset.document });
   followVsCodeTheme();
   await prepareWorkers(scriptBase);
   const page = new ChapterPage(article, post);
   const scroll = new ScrollSync(page.blocks, (line) => post({ type: 'scrolled', line }));
 
-  // A double-click on a cell's code opens that line in the editor.
+  // A double-click on a cell's code opens the cell in the editor.
   article.addEventListener('dblclick', (event) => {
-    const block = (event.target as Element).closest<HTMLElement>('.pb-block');
-    const code = (event.target as Element).closest('.cell-editor');
-    if (block && code) post({ type: 'open', line: Number(block.dataset.line) });
+    const target = event.target as Element;
+    const cell = target.closest<HTMLElement>('.cell-editor')?.closest<HTMLElement>('figure[data-cell]');
+    const line = cell ? page.lineOf(cell.dataset.cell ?? '') : undefined;
+    if (line !== undefined) post({ type: 'open', line: line + 1 });
   });
 
   addEventListener('message', (event: MessageEvent<HostMessage>) => {

@@ -5,9 +5,11 @@
  * Chromium opens it from playwright-core in a persistent profile that allows the webviews'
  * service worker; the suite reports through codeAutomationLog / codeAutomationExit.
  *
- * After the suite, whose last test leaves the pendulum chapter's preview in front, the
- * driver reads the preview's simulator canvases through the webview's frames: they must
- * hold a drawing, and it must move.
+ * While the suite runs, the driver does what it asks in the webview (requests.ts: scrolling
+ * the preview, which only a user can do). After it, whose last test leaves the pendulum
+ * chapter's preview in front, the driver checks the preview through the webview's frames
+ * (preview-checks.ts): its simulator's canvases hold a drawing that moves, and the book's
+ * web workers reached it.
  *
  *   tsx vscode/test/driver/run.ts
  */
@@ -17,9 +19,11 @@ import { existsSync } from 'node:fs';
 import { createServer } from 'node:net';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { chromium, type Frame } from 'playwright-core';
+import { chromium } from 'playwright-core';
 import { build, EXTENSION_DIR } from '../../build/build.ts';
-import { readCanvases, type CanvasReading } from './canvas.ts';
+import { checkCanvas, checkWorkers, previewFrame } from './preview-checks.ts';
+import { DRIVER_REQUEST } from '../driver-protocol.ts';
+import { handleRequest } from './requests.ts';
 import { prepareVsCode, VSCODE_COMMIT } from './vscode-web.ts';
 
 const ROOT = path.resolve(EXTENSION_DIR, '..');
@@ -65,34 +69,6 @@ async function profile(): Promise<string> {
   return folder;
 }
 
-/** The frame of the preview whose chapter title is `title`, among the webviews' inner frames. */
-async function previewFrame(frames: readonly Frame[], title: string): Promise<Frame | undefined> {
-  for (const frame of frames) {
-    try {
-      if ((await frame.evaluate(() => document.querySelector('article[data-chapter] h1')?.textContent ?? null)) === title) return frame;
-    } catch {
-      // A frame that is navigating or not a preview.
-    }
-  }
-  return undefined;
-}
-
-function describeCanvases(readings: readonly CanvasReading[]): string {
-  return readings.map((r) => `${r.width}×${r.height}: ${r.drawn} drawn pixels`).join('; ');
-}
-
-async function checkCanvas(frames: () => readonly Frame[]): Promise<string | null> {
-  const frame = await previewFrame(frames(), 'The pendulum');
-  if (!frame) return 'no preview of "The pendulum" among the webview frames';
-  const first = await readCanvases(frame);
-  await new Promise((resolve) => setTimeout(resolve, 1000));
-  const second = await readCanvases(frame);
-  console.log(`canvas check: ${describeCanvases(second)}`);
-  if (!second.some((r) => r.drawn > 200)) return `the simulator's canvases hold no drawing (${describeCanvases(second)})`;
-  if (!second.some((r, i) => r.hash !== first[i]?.hash)) return 'the simulator drew once and then stood still for a second';
-  return null;
-}
-
 async function main(): Promise<number> {
   const started = Date.now();
   const stage = (what: string) => console.log(`[${((Date.now() - started) / 1000).toFixed(1)} s] ${what}`);
@@ -131,7 +107,12 @@ async function main(): Promise<number> {
     // The suite's reporter writes with console.info; the workbench's own warnings and errors (many, and
     // expected: no settings file, no gallery) go to the log file unless PHASEBOOK_TEST_VERBOSE is set.
     await page.exposeFunction('codeAutomationLog', (type: 'log' | 'error' | 'warn' | 'info', args: unknown[]) => {
-      log.push(`${type}: ${args.map(String).join(' ')}`);
+      const line = args.map(String).join(' ');
+      log.push(`${type}: ${line}`);
+      if (line.startsWith(DRIVER_REQUEST)) {
+        void handleRequest(page, line);
+        return;
+      }
       if (type === 'log' || type === 'info' || process.env.PHASEBOOK_TEST_VERBOSE) console[type]?.(...args);
     });
     await page.goto(`http://localhost:${port}`);
@@ -142,12 +123,22 @@ async function main(): Promise<number> {
     if (code !== 0) console.log(`The workbench's console: ${path.relative(process.cwd(), LOG_FILE)}`);
     stage(code === -1 ? `the suite did not finish within ${SUITE_TIMEOUT_MS / 1000} s` : `the suite exited with ${code}`);
     if (code !== 0) return 1;
-    const canvas = await checkCanvas(() => page.frames());
+    const frame = await previewFrame(page, 'The pendulum');
+    if (!frame) {
+      stage('no preview of "The pendulum" among the webview frames');
+      return 1;
+    }
+    let failed = false;
+    for (const [name, check] of [['canvas', () => checkCanvas(frame)], ['workers', () => checkWorkers(frame)]] as const) {
+      const failure = await check();
+      failed ||= failure !== null;
+      stage(failure ? `${name} check failed: ${failure}` : `${name} check passed`);
+    }
     // For a look at the workbench with the preview (not a test): PHASEBOOK_TEST_SCREENSHOT=file.png.
     if (process.env.PHASEBOOK_TEST_SCREENSHOT) await page.screenshot({ path: process.env.PHASEBOOK_TEST_SCREENSHOT });
-    stage(canvas ? `canvas check failed: ${canvas}` : 'canvas check passed');
-    return canvas ? 1 : 0;
+    return failed ? 1 : 0;
   } finally {
+    await writeFile(LOG_FILE, log.join('\n'));
     await context.close();
     server.dispose();
   }

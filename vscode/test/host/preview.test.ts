@@ -1,6 +1,7 @@
 import { expect } from 'chai';
 import * as vscode from 'vscode';
-import { extensionApi, nextMessage, workspaceFile } from './support.ts';
+import { askDriver } from '../driver-protocol.ts';
+import { extensionApi, nextMessage, pause, waitFor, workspaceFile } from './support.ts';
 
 describe('the live preview', () => {
   const uri = workspaceFile('content/pendulum.mdx');
@@ -55,6 +56,29 @@ describe('the live preview', () => {
     const ran = nextMessage(preview, 'cells', (m) => m.cells.find((c) => c.id === 'pendulumEquations')?.state === 'fulfilled', 20_000);
     await vscode.commands.executeCommand('phasebook.runCell', uri, 'pendulumEquations');
     await ran;
+  });
+
+  it('scrolls the editor as the preview is scrolled, and the preview as the editor is', async () => {
+    const { previews } = await extensionApi();
+    const preview = previews.get(uri)!;
+    const editor = await vscode.window.showTextDocument(uri, { viewColumn: vscode.ViewColumn.One });
+    const lines = editor.document.getText().split('\n');
+    const checkFence = lines.indexOf('periodCheck = {') - 1;
+    const modelFence = lines.indexOf('pendulumModel = canonicalEquations({') - 1;
+    // An editor revealing a line at its top keeps a few lines above it (under its sticky headings).
+    const near = (line: number, target: number) => target - 6 <= line && line <= target + 2;
+
+    askDriver('scroll-to-cell periodCheck');
+    await waitFor(`the editor to show line ${checkFence} at its top`, () => near(editor.visibleRanges[0].start.line, checkFence));
+
+    await pause(400);
+    const reported = nextMessage(preview, 'scrolled');
+    editor.revealRange(new vscode.Range(modelFence, 0, modelFence, 0), vscode.TextEditorRevealType.AtTop);
+    // The preview follows (and ignores its own scrolling); nudged, it reports the line at its top.
+    await pause(600);
+    askDriver('nudge');
+    const { line } = await reported;
+    expect(near(line, modelFence), `the preview's top line ${line}, the editor's ${modelFence}`).to.equal(true);
   });
 
   it('is left in front, its simulator running, for the driver to read its canvases', async () => {

@@ -66,3 +66,7 @@ export function placeOf(diagnostic: vscode.Diagnostic): string {
 export function nonEmpty<T>(list: readonly T[]): readonly T[] | undefined {
   return list.length ? list : undefined;
 }
+
+export function pause(ms: number): Promise<void> {
+  return new Promise((resolve) => setTimeout(resolve, ms));
+}

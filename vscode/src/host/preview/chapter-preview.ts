@@ -45,7 +45,7 @@ export class ChapterPreview implements vscode.Disposable {
     this.#index = index;
     this.#diagnostics = diagnostics;
     panel.webview.options = { enableScripts: true, localResourceRoots: [vscode.Uri.joinPath(extensionUri, 'dist')] };
-    panel.webview.html = previewHtml(panel.webview, extensionUri);
+    panel.webview.html = previewHtml(panel.webview, extensionUri, document.uri);
     this.#disposables.push(
       panel.webview.onDidReceiveMessage((message: PreviewMessage) => this.#receive(message)),
       panel.onDidDispose(() => this.dispose()),

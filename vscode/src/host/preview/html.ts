@@ -7,13 +7,18 @@
  */
 import * as vscode from 'vscode';
 
+function escapeAttribute(text: string): string {
+  return text.replace(/[&<>"']/g, (c) => `&#${c.charCodeAt(0)};`);
+}
+
 function nonce(): string {
   const bytes = new Uint8Array(18);
   crypto.getRandomValues(bytes);
   return btoa(String.fromCharCode(...bytes));
 }
 
-export function previewHtml(webview: vscode.Webview, extensionUri: vscode.Uri): string {
+/** `document` is kept in the webview's state, so that VS Code can restore the preview after a reload. */
+export function previewHtml(webview: vscode.Webview, extensionUri: vscode.Uri, document: vscode.Uri): string {
   const asset = (name: string) => webview.asWebviewUri(vscode.Uri.joinPath(extensionUri, 'dist', name)).toString();
   const source = webview.cspSource;
   const once = nonce();
@@ -35,7 +40,7 @@ export function previewHtml(webview: vscode.Webview, extensionUri: vscode.Uri): 
     <link rel="stylesheet" href="${asset('preview.css')}">
   </head>
   <body>
-    <main id="main" class="page"><article data-chapter="preview"></article></main>
+    <main id="main" class="page"><article data-chapter="preview" data-document="${escapeAttribute(document.toString())}"></article></main>
     <script nonce="${once}" src="${asset('preview.js')}" data-workers="${asset('workers/')}"></script>
   </body>
 </html>`;

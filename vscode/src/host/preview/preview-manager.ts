@@ -50,9 +50,32 @@ export class PreviewManager implements vscode.Disposable {
       retainContextWhenHidden: true,
       localResourceRoots: [vscode.Uri.joinPath(this.#extensionUri, 'dist')],
     });
+    return this.#adopt(document, panel);
+  }
+
+  /**
+   * A preview VS Code restores after a reload (registered as the webview
+   * panel serializer): the webview kept its chapter's URI in its state.
+   */
+  async revive(panel: vscode.WebviewPanel, state: unknown): Promise<void> {
+    const uri = typeof state === 'object' && state !== null && typeof (state as { uri?: unknown }).uri === 'string' ? (state as { uri: string }).uri : null;
+    if (!uri || !vscode.workspace.isTrusted || this.get(vscode.Uri.parse(uri))) {
+      panel.dispose();
+      return;
+    }
+    try {
+      this.#adopt(await vscode.workspace.openTextDocument(vscode.Uri.parse(uri)), panel);
+    } catch {
+      // The chapter is gone (deleted, renamed): its old preview goes too.
+      panel.dispose();
+    }
+  }
+
+  #adopt(document: vscode.TextDocument, panel: vscode.WebviewPanel): ChapterPreview {
+    const key = document.uri.toString();
     const preview = new ChapterPreview(document, panel, this.#extensionUri, this.#index, this.#diagnostics);
-    this.#previews.set(uri.toString(), preview);
-    preview.onDidClose(() => this.#previews.delete(uri.toString()));
+    this.#previews.set(key, preview);
+    preview.onDidClose(() => this.#previews.delete(key));
     this.#opened.fire(preview);
     return preview;
   }
