@@ -68,7 +68,8 @@ export default defineConfig({
     rehypePlugins: [rehypeKatex],
     syntaxHighlight: { type: 'shiki', excludeLangs: [CELL_CODE_LANGUAGE] },
     shikiConfig: {
-      themes: { light: 'github-light', dark: 'github-dark' },
+      // github-dark's comments read at 3.4:1 on the dark page; the default variant's at 5.9:1.
+      themes: { light: 'github-light', dark: 'github-dark-default' },
       defaultColor: false,
     },
   },

@@ -5,7 +5,11 @@
  * sideways reachable.
  */
 import assert from 'node:assert/strict';
+import { readdirSync, existsSync, readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { join } from 'node:path';
 import { after, before, test } from 'node:test';
+import { DIST } from './server.mjs';
 import { cell, cellsReady, openChapter, openSite } from './fixture.mjs';
 
 /** @type {Awaited<ReturnType<typeof openSite>>} */
@@ -72,12 +76,48 @@ test('display math wider than a phone’s column can be reached by keyboard and 
       overflows: box.scrollWidth > box.clientWidth + 1,
       focusable: box.tabIndex === 0,
       label: box.getAttribute('aria-label'),
+      role: box.getAttribute('role'),
     })),
   );
   assert.ok(scrollables.some((s) => s.overflows), 'some formula is wider than 360 px');
   for (const s of scrollables) {
     assert.equal(s.focusable, s.overflows);
-    if (s.overflows) assert.equal(s.label, 'Formula, scrolls sideways');
+    if (s.overflows) {
+      assert.match(s.label, /^Formula \d+, scrolls sideways$/);
+      assert.equal(s.role, 'region');
+    }
   }
   await page.close();
 });
+
+/** Every page of the built book. */
+function pages() {
+  const found = ['/'];
+  for (const entry of readdirSync(DIST, { withFileTypes: true })) {
+    if (entry.isDirectory() && !entry.name.startsWith('_') && existsSync(join(DIST, entry.name, 'index.html'))) found.push(`/${entry.name}/`);
+  }
+  return found;
+}
+
+const AXE = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+
+for (const width of [1280, 390]) {
+  test(`axe finds no violation on any page at ${width} px, every cell run`, async (t) => {
+    const page = await site.context.newPage();
+    await page.setViewportSize({ width, height: 900 });
+    const report = [];
+    for (const path of pages()) {
+      await page.goto(`${site.origin}${path}`);
+      if (await page.locator('[data-cell]').count()) await cellsReady(page);
+      // Evaluated, not injected as a <script>: the page's Content-Security-Policy rightly refuses inline scripts.
+      await page.evaluate(AXE);
+      const violations = await page.evaluate(async () =>
+        (await window.axe.run(document, { resultTypes: ['violations'] })).violations.map((v) => `${v.id} (${v.nodes.length}): ${v.nodes[0]?.target.join(' ')}`),
+      );
+      report.push(...violations.map((v) => `${path} ${v}`));
+    }
+    t.diagnostic(`${pages().length} pages checked`);
+    assert.deepEqual(report, []);
+    await page.close();
+  });
+}

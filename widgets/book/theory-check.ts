@@ -137,7 +137,8 @@ export function theoryCheck(options: TheoryCheckOptions): HTMLElement {
     root.append(sources);
   }
   root.append(element('p', 'pb-verdict', verdictText(judgement)));
-  root.setAttribute('role', 'status');
+  // Announced when it changes; a <figure> may not take the status role, so it is a live region instead.
+  root.setAttribute('aria-live', 'polite');
   root.dataset.ready = '';
   return root;
 }
