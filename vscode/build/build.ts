@@ -5,6 +5,7 @@
  * and, with `--tests`, the in-host test suite into vscode/dist-test/.
  *
  *   tsx vscode/build/build.ts [--tests] [--minify]
+ *   tsx vscode/build/build.ts --catalogue     (the catalogue alone, for the type check)
  */
 import { mkdir, rm, writeFile } from 'node:fs/promises';
 import path from 'node:path';
@@ -30,11 +31,16 @@ const common: esbuild.BuildOptions = {
   define: { 'process.env.NODE_ENV': '"production"' },
 };
 
-/** `minify` is for the package: minified and without source maps; the tests' builds keep them readable. */
-export async function build({ tests = false, minify = false } = {}): Promise<void> {
+/** The builtins' catalogue, which the extension's bundle (and its type check) imports. */
+export async function writeCatalogue(): Promise<void> {
   const generated = path.join(EXTENSION_DIR, 'generated');
   await mkdir(generated, { recursive: true });
   await writeFile(path.join(generated, 'catalogue.json'), JSON.stringify(generateCatalogue(ROOT), null, 1));
+}
+
+/** `minify` is for the package: minified and without source maps; the tests' builds keep them readable. */
+export async function build({ tests = false, minify = false } = {}): Promise<void> {
+  await writeCatalogue();
 
   const dist = path.join(EXTENSION_DIR, 'dist');
   // Nothing of an earlier build (source maps of a test build, say) may end up in a package.
@@ -71,7 +77,8 @@ export async function build({ tests = false, minify = false } = {}): Promise<voi
 }
 
 if (process.argv[1] && path.resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
-  build({ tests: process.argv.includes('--tests'), minify: process.argv.includes('--minify') }).catch((error: unknown) => {
+  const run = process.argv.includes('--catalogue') ? writeCatalogue() : build({ tests: process.argv.includes('--tests'), minify: process.argv.includes('--minify') });
+  run.catch((error: unknown) => {
     console.error(error);
     process.exit(1);
   });

@@ -17,6 +17,7 @@ const CHECK_TIMEOUT_MS = 60_000;
 
 export class TheoryTests implements vscode.Disposable {
   readonly controller: vscode.TestController;
+  readonly profile: vscode.TestRunProfile;
   readonly #index: ChapterIndex;
   readonly #previews: PreviewManager;
 
@@ -24,7 +25,7 @@ export class TheoryTests implements vscode.Disposable {
     this.#index = index;
     this.#previews = previews;
     this.controller = vscode.tests.createTestController('phasebook.theoryChecks', 'Phasebook theory checks');
-    this.controller.createRunProfile('Run theory checks', vscode.TestRunProfileKind.Run, (request, token) => this.#run(request, token), true);
+    this.profile = this.controller.createRunProfile('Run theory checks', vscode.TestRunProfileKind.Run, (request, token) => this.#run(request, token), true);
     this.controller.refreshHandler = async () => {
       await index.ready;
       this.#refreshAll();

@@ -8,6 +8,40 @@ const children = (item: vscode.TestItem) => {
   return found;
 };
 
+/**
+ * What a test run reports, recorded: the controller's runs are wrapped while `act` runs, since
+ * an extension cannot read test results back from VS Code.
+ */
+async function recordRun(controller: vscode.TestController, act: () => Thenable<void> | void): Promise<string[]> {
+  const outcomes: string[] = [];
+  const create = controller.createTestRun;
+  const first = (message: vscode.TestMessage | readonly vscode.TestMessage[]) => (Array.isArray(message) ? message[0] : message) as vscode.TestMessage;
+  controller.createTestRun = (...args) => {
+    const run = create.apply(controller, args);
+    return {
+      ...run,
+      token: run.token,
+      started: (item) => (outcomes.push(`started ${item.label}`), run.started(item)),
+      passed: (item, duration) => (outcomes.push(`passed ${item.label}`), run.passed(item, duration)),
+      failed: (item, message, duration) => {
+        const m = first(message);
+        outcomes.push(`failed ${item.label}: expected ${m.expectedOutput}, actual ${m.actualOutput}, at line ${m.location?.range.start.line}`);
+        run.failed(item, message, duration);
+      },
+      errored: (item, message, duration) => (outcomes.push(`errored ${item.label}: ${first(message).message}`), run.errored(item, message, duration)),
+      skipped: (item) => (outcomes.push(`skipped ${item.label}`), run.skipped(item)),
+      appendOutput: (...output) => run.appendOutput(...output),
+      end: () => (outcomes.push('end'), run.end()),
+    } as vscode.TestRun;
+  };
+  try {
+    await act();
+  } finally {
+    controller.createTestRun = create;
+  }
+  return outcomes;
+}
+
 describe('theory checks in the Test Explorer', () => {
   before(extensionApi);
 
@@ -29,6 +63,21 @@ describe('theory checks in the Test Explorer', () => {
     expect(verdicts.get('passing')).to.deep.include({ outcome: 'passed' });
     expect(verdicts.get('failing')).to.deep.include({ outcome: 'failed', expected: `${Math.PI} ± 1 %`, actual: '3' });
     expect(verdicts.get('failing')!.message).to.match(/^Pi, roughly: measured 3, predicted 3\.14159\d*; difference 4\.51 %, allowed 1 %: outside the expected error$/);
+  });
+
+  it('reports a run from the Test Explorer: passed, or failed with theory against simulation, at the cell', async () => {
+    const { theoryTests } = await extensionApi();
+    const checks = theoryTests.controller.items.get(workspaceFile('content/checks.mdx').toString())!;
+    const outcomes = await recordRun(theoryTests.controller, () =>
+      theoryTests.profile.runHandler(new vscode.TestRunRequest([checks]), new vscode.CancellationTokenSource().token),
+    );
+    expect(outcomes).to.deep.equal([
+      'started Two plus two',
+      'started Pi, roughly',
+      'passed Two plus two',
+      `failed Pi, roughly: expected ${Math.PI} ± 1 %, actual 3, at line 10`,
+      'end',
+    ]);
   });
 
   it("turns a cell's runtime error in the preview into a diagnostic on its line", async () => {
