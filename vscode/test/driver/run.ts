@@ -13,9 +13,7 @@
  *
  *   tsx vscode/test/driver/run.ts
  */
-import { execFileSync } from 'node:child_process';
 import { cp, mkdir, mkdtemp, rm, writeFile } from 'node:fs/promises';
-import { existsSync } from 'node:fs';
 import { createServer } from 'node:net';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
@@ -42,11 +40,8 @@ async function prepareWorkspace(): Promise<string> {
   return folder;
 }
 
-/** @vscode/test-web is the extension folder's own dev dependency (see vscode/.npmrc for why); installed on first use. */
+/** @vscode/test-web is the extension folder's own dev dependency (see vscode/.npmrc for why), installed by `npm run setup:vscode`. */
 async function testWeb(): Promise<typeof import('@vscode/test-web')> {
-  if (!existsSync(path.join(EXTENSION_DIR, 'node_modules/@vscode/test-web'))) {
-    execFileSync('npm', ['install', '--no-audit', '--no-fund', '--no-save'], { cwd: EXTENSION_DIR, stdio: 'inherit', env: { ...process.env, PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD: '1' } });
-  }
   return import(path.join(EXTENSION_DIR, 'node_modules/@vscode/test-web/out/server/index.js'));
 }
 
