@@ -18,7 +18,7 @@ import { join } from 'node:path';
 import { after, before, describe, test } from 'node:test';
 import { gzipSync } from 'node:zlib';
 import { HEAVY } from '../../bench/cold-load.mjs';
-import { assertAgrees, THEORY_CHECK, widgetsReady } from './chapter-checks.mjs';
+import { assertAgrees, theoryChecks, widgetsReady } from './chapter-checks.mjs';
 import { cell, cellsReady, openSite, typeIntoCell, watchPage } from './fixture.mjs';
 import { DIST } from './server.mjs';
 
@@ -70,9 +70,7 @@ async function open(path, rewrite) {
 async function assertChapterHealthy(page) {
   const errors = await page.locator('[data-cell-error]:visible').allTextContents();
   assert.deepEqual(errors, []);
-  const checks = await page.$$eval(THEORY_CHECK, (all) =>
-    all.map((w) => ({ ...w.dataset, measured: Number(w.dataset.measured), predicted: Number(w.dataset.predicted), tolerance: Number(w.dataset.tolerance) })),
-  );
+  const checks = await theoryChecks(page);
   for (const check of checks) assertAgrees(check);
   return checks.length;
 }

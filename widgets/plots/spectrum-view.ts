@@ -204,7 +204,7 @@ class SpectrumViewImpl implements SpectrumView {
     if (peaks.length) this.element.dataset.peak = String(peaks[0].frequency);
     else delete this.element.dataset.peak;
     const strongest = peaks.length ? `; strongest peak at f = ${fixed(peaks[0].frequency, frequencyDecimals(choice.duration))}` : '';
-    this.frame.canvas.setAttribute('aria-label', `Frequency spectrum of ${this.series}${strongest}`);
+    this.frame.canvas.setAttribute('aria-label', `Frequency spectrum of ${this.series}${strongest}${markerText(theory)}`);
     const t0 = record.time(choice.from);
     const near = theory && peaks.length ? nearestPeak(peaks, theory.frequency) : 0;
     this.readout.show(
@@ -221,6 +221,7 @@ class SpectrumViewImpl implements SpectrumView {
     this.peaks = [];
     this.waiting = onCanvas ? message : '';
     delete this.element.dataset.peak;
+    this.frame.canvas.setAttribute('aria-label', `Frequency spectrum of ${this.series}: ${message}${markerText(theoryOf(this.options.theory, (f) => fixed(f, 3)))}`);
     this.readout.show([], '', undefined, message);
   }
 
@@ -244,4 +245,9 @@ class SpectrumViewImpl implements SpectrumView {
     }
     frame.markReady();
   }
+}
+
+/** The dashed marker, said in the plot's text alternative (it is drawn only on the canvas). */
+function markerText(theory: { frequency: number; label: string } | undefined): string {
+  return theory ? `; dashed line: ${theory.label} at f = ${fixed(theory.frequency, 3)}` : '';
 }
