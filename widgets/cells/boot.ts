@@ -10,6 +10,10 @@
  * or error, `data-cells-complete` that every cell of the page has. Editors load when the reader first touches a
  * cell (lazy.ts). The build's compiled models and typeset equations come
  * from the page's data element (book/page-data.ts).
+ *
+ * A page opened from a shared link (`#share=…`, share-format.ts) runs over an
+ * in-memory store holding the link's edits as unrun drafts, apart from the
+ * reader's own saved edits (share-session.ts, share-ui.ts).
  */
 import { PAGE_DATA_ATTRIBUTE, pageContext } from '../book/page-data.ts';
 import { downloadText } from '../data/download.ts';
@@ -26,6 +30,9 @@ import { INPUT_EVENT, type WidgetInput } from './widget-input.ts';
 import { Notebook } from './runtime.ts';
 import { CellScheduler } from './schedule.ts';
 import { EditStore } from './storage.ts';
+import { decodeShare, isShareFragment } from './share-format.ts';
+import { planShared, sharedStore, type PageCell } from './share-session.ts';
+import { setUpShareButton, showShareProblem, showSharedBanner, type SharedView } from './share-ui.ts';
 import { CellView } from './view.ts';
 
 function markReady(): void {
@@ -85,11 +92,51 @@ function passWidgetInputs(root: HTMLElement, cells: readonly LiveCell[]): void {
   });
 }
 
+/**
+ * The link's edits that apply to this chapter, in a store of their own; null
+ * (after saying why, above the chapter) when the fragment is malformed, of
+ * another version or chapter, or has nothing for this page.
+ */
+async function openShared(root: HTMLElement): Promise<SharedView | null> {
+  const decoded = await decodeShare(location.hash);
+  if (!decoded.ok) {
+    showShareProblem(decoded.message);
+    return null;
+  }
+  const page: PageCell[] = [...root.querySelectorAll<HTMLElement>('[data-cell]')].map((el) => ({ id: el.dataset.cell ?? '', hash: el.dataset.cellHash ?? '' }));
+  const plan = planShared(decoded.edits, root.dataset.chapter ?? '', page);
+  if (typeof plan === 'string') {
+    showShareProblem(plan);
+    return null;
+  }
+  const hashes = new Map(page.map((cell) => [cell.id, cell.hash]));
+  return { plan, store: sharedStore(location.pathname, plan, hashes), ownStore: () => new EditStore(location.pathname) };
+}
+
 function boot(): void {
   const root = document.querySelector<HTMLElement>('[data-chapter]');
   if (!root) return;
+  // Pasting another shared link into the address bar changes only the fragment: load the page for it.
+  addEventListener('hashchange', () => {
+    if (isShareFragment(location.hash)) location.reload();
+  });
+  if (!isShareFragment(location.hash)) {
+    start(root, null);
+    return;
+  }
+  void openShared(root)
+    .catch((error: unknown) => {
+      // Nothing in decoding should throw; if it does, the chapter still starts as without the link.
+      console.error(error);
+      showShareProblem('The link’s shared edits could not be opened.');
+      return null;
+    })
+    .then((shared) => start(root, shared));
+}
+
+function start(root: HTMLElement, shared: SharedView | null): void {
   // Keyed by the page's path, base path included: two books on one origin keep their edits apart.
-  const store = new EditStore(location.pathname);
+  const store = shared?.store ?? new EditStore(location.pathname);
   const data = [...document.querySelectorAll(`template[${PAGE_DATA_ATTRIBUTE}]`)].map((t) => t.getAttribute(PAGE_DATA_ATTRIBUTE));
   const page = pageContext(data, () => {
     document.dispatchEvent(new CustomEvent('phasebook:compiling'));
@@ -104,6 +151,8 @@ function boot(): void {
   });
   chapter.build();
   const { cells } = chapter;
+  setUpShareButton(chapter);
+  if (shared) showSharedBanner(shared, chapter);
   // A page being printed shows every cell's output.
   addEventListener('beforeprint', () => cells.forEach((cell) => scheduler.want(cell)));
   // Keystrokes typed just before the reader leaves are saved, not lost with the pending timer.
