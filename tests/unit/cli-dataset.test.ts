@@ -5,7 +5,7 @@
  * errs by ~1e-14 over a few time units) and read back by readers that are
  * not phasebook's (support/dataset-readers.ts).
  */
-import { execFile } from 'node:child_process';
+import { execFile, spawnSync } from 'node:child_process';
 import { mkdtempSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -150,6 +150,22 @@ describe('initial states of many trajectories', () => {
     }
   });
 
+  it.skipIf(!HAS_NUMPY)('reads an initial NPY that numpy.save wrote, and a CSV that numpy.savetxt wrote (needs python3 with numpy)', async () => {
+    // An independent writer: numpy's own format.py, float64 in C order, and savetxt's header line.
+    const py = spawnSync('python3', ['-c', `import numpy as np, sys
+x = np.array([[1.0, 0.0], [0.1, -0.3], [-2.0, 0.75], [0.0, 1e-3]])
+np.save(sys.argv[1], x)
+np.savetxt(sys.argv[2], x, delimiter=',', header='q,p', comments='', fmt='%.17g')`, join(dir, 'initial.npy'), join(dir, 'initial.csv')], { encoding: 'utf8' });
+    expect(py.stderr).toBe('');
+    for (const name of ['initial.npy', 'initial.csv']) {
+      const out = join(dir, `${name}.json`);
+      expect(await simulate(...OSCILLATOR, '--initial-file', join(dir, name), '--t-end', '2', '--every', '500', '--format', 'json', '--output', out)).toBe(0);
+      const { meta, table } = parseJSON(readFileSync(out, 'utf8'));
+      expect(meta).toMatchObject({ initial: [1, 0, 0.1, -0.3, -2, 0.75, 0, 1e-3], count: 4 });
+      checkLong(rowsOf(table), 4, 9);
+    }
+  });
+
   it('samples a box from a seed: the same set for the same seed, another for another', async () => {
     const run = async (seed: string) => {
       const out = join(dir, `s${seed}.csv`);
@@ -242,6 +258,35 @@ describe('formats researchers load', () => {
     expect(JSON.parse(py.metadata.phasebook)).toEqual(JSON.parse(js.metadata.phasebook));
   });
 
+  it.skipIf(!HAS_PYARROW)('writes wide Parquet that pyarrow reads, every trajectory on the closed form (needs python3 with pyarrow)', async () => {
+    const out = join(dir, 'wide.parquet');
+    expect(await simulate(...OSCILLATOR, ...SET, '--derivatives', '--layout', 'wide', '--output', out)).toBe(0);
+    const table = pyarrowRead(out);
+    expect(table.columns).toHaveLength(1 + 5 * 5);
+    expect(JSON.parse(table.metadata.phasebook)).toMatchObject({ layout: 'wide', count: 5, samples: 11, derivatives: true });
+    const t = table.data.t;
+    expect(t).toHaveLength(11);
+    for (let j = 0; j < 5; j++) {
+      const [q, p, H, dq, dp] = ['q', 'p', 'H', 'dq/dt', 'dp/dt'].map((c) => table.data[`${c}[${j}]`]);
+      t.forEach((time, r) => {
+        const [qe, pe] = exact(q[0], p[0], time);
+        expect(Math.abs(q[r] - qe)).toBeLessThan(TOLERANCE);
+        expect(Math.abs(p[r] - pe)).toBeLessThan(TOLERANCE);
+        expect(Math.abs(H[r] - (q[0] ** 2 + p[0] ** 2) / 2)).toBeLessThan(TOLERANCE);
+        expect([dq[r], dp[r]]).toEqual([p[r], -q[r]]);
+      });
+    }
+  });
+
+  it('writes a long JSON table numbered by trajectory when there are many, each on the closed form', async () => {
+    const out = join(dir, 'set.json');
+    expect(await simulate(...OSCILLATOR, ...SET, '--output', out)).toBe(0);
+    const { meta, table } = parseJSON(readFileSync(out, 'utf8'));
+    expect(table.columns).toEqual(['trajectory', 't', 'q', 'p', 'H']);
+    expect(meta).toMatchObject({ format: 'json', count: 5, trajectories: 5, samples: 11, tEnd: 2 });
+    checkLong(rowsOf(table), 5, 11);
+  });
+
   it('keeps the single-trajectory CSV as it was: t, q, p, H and no trajectory column', async () => {
     const out = join(dir, 'one.csv');
     expect(await simulate(...OSCILLATOR, '--initial', '1,0', '--t-end', '1', '--every', '1000', '--derivatives', '--output', out)).toBe(0);
@@ -254,7 +299,7 @@ describe('formats researchers load', () => {
 describe('workers and shards', () => {
   const SET = [...OSCILLATOR, '--sample', '37', '--seed', '9', '--box', 'q=-1:1,p=-1:1', '--t-end', '40', '--every', '197', '--derivatives'];
 
-  it.each(['csv', 'npz', 'parquet'])('writes the same %s bytes with 1, 2 or 3 worker threads', async (format) => {
+  it.each(['csv', 'json', 'npz', 'parquet'])('writes the same %s bytes with 1, 2 or 3 worker threads', async (format) => {
     const files = await Promise.all(
       [1, 2, 3].map(async (k) => {
         const out = join(dir, `w${k}.${format}`);
@@ -347,6 +392,9 @@ describe('bad input: one line on stderr, status 2, no file left', () => {
     ['a shard index out of range', () => ['--sample', '3', '--box', 'q=-1:1,p=-1:1', '--shard', '5/4'], /--shard 5\/4: the shard number runs from 1 to 4/],
     ['a box that misses a component', () => ['--sample', '3', '--box', 'q=-1:1'], /--box gives no range for p/],
     ['two sets at once', () => ['--initial', '1,0', '--grid', 'q=0:1:2,p=0'], /give one of --initial, --initial-file, --sample and --grid, not --initial and --grid/],
+    ['a shard index of 0', () => ['--grid', 'q=0:1:4,p=0', '--shard', '0/4'], /--shard 0\/4: the shard number runs from 1 to 4/],
+    ['a CSV shard, which merge could not check', () => ['--grid', 'q=0:1:4,p=0', '--shard', '1/4', '--format', 'csv'], /--shard writes a part for phasebook merge, .*give --format npz, parquet or json/],
+    ['an initial file that is missing', () => ['--initial-file', join(dir, 'none.csv')], /none\.csv/],
   ])('%s', async (_, extra, message) => {
     const args = extra();
     expect(await simulate(...OSCILLATOR, ...args, '--t-end', '1', '--output', out())).toBe(2);

@@ -19,11 +19,15 @@ import type { BlockOrder } from './formats/dataset-shape.ts';
 import type { Task } from './dataset-task.ts';
 
 /**
- * About 1 MB of numbers per task: a task costs far more than its message
- * (tens of microseconds) unless every sample is a step, and the few tasks
- * held while they wait their turn stay small beside the process itself.
+ * 256 KB of numbers per task. Each worker keeps a pool of buffers this size,
+ * as many as can be out at once (the results the scheduler holds, one being
+ * filled, one on its way back), so the largest tasks decide how much memory
+ * a run holds beyond the process itself: at 1 MB a task, a run writing every
+ * step held 20 MB more on two workers than one writing every 1000th. Even a
+ * task of every step is still thousands of steps, far more than its message
+ * costs (tens of microseconds).
  */
-export const BLOCK_VALUES = 1 << 17;
+export const BLOCK_VALUES = 1 << 15;
 /**
  * Numbers per task whose rows go out as text: their string (about 20 bytes a
  * number, and more while it is built) lives on the JS heap, and a few tasks
@@ -43,6 +47,8 @@ export interface Plan {
   runs: number;
   /** chunks per run, the same for every run */
   chunks: number;
+  /** numbers in the largest task */
+  maxValues: number;
   /** the task written `seq`-th */
   task(seq: number): Task;
   /** the sequence number of chunk c of run r */
@@ -86,5 +92,7 @@ export function planTasks(shape: PlanShape, order: BlockOrder, workers: number, 
     const rowTo = Math.min(samples, rowFrom + chunkRows);
     return { id, run, first: a, count: b - a, rowFrom, rowTo, last: chunk === chunks - 1 };
   };
-  return { order, runs, chunks, task, seq };
+  const widest = runs === 0 ? 0 : order === 'time' ? Math.ceil(count / runs) : batch;
+  const maxValues = widest * Math.min(chunkRows, samples) * width;
+  return { order, runs, chunks, maxValues, task, seq };
 }

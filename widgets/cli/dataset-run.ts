@@ -115,7 +115,16 @@ export async function executeRun(run: PreparedRun, writer: DatasetWriter, option
   const text = writerText(writer);
   const plan = planTasks({ ...shape, width: shape.columns.length }, writer.order, wanted, options.timeChunkRows ?? shape.samples, text ? TEXT_BLOCK_VALUES : BLOCK_VALUES);
   const workers = Math.max(1, Math.min(wanted, plan.runs));
-  const setup: TaskSetup = { times: run.times, set: run.set, derivatives: spec.derivatives, text, numberTrajectories: shape.total > 1 };
+  const ahead = 2 * workers + 2;
+  const setup: TaskSetup = {
+    times: run.times,
+    set: run.set,
+    derivatives: spec.derivatives,
+    text,
+    numberTrajectories: shape.total > 1,
+    bufferValues: plan.maxValues,
+    spareBuffers: ahead + 2,
+  };
   const bar = options.progress === false ? undefined : progressBar();
   let done = 0;
   const label = () =>
@@ -134,7 +143,7 @@ export async function executeRun(run: PreparedRun, writer: DatasetWriter, option
   try {
     await schedule(plan, executors, {
       order: writer.order,
-      ahead: 2 * workers + 2,
+      ahead,
       write: (task, result) => writer.write({ first: task.first, count: task.count, rowFrom: task.rowFrom, rowTo: task.rowTo, data: result.data, text: result.text }),
       done: workers === 1 ? undefined : (result) => advance(result.steps),
       signal: options.signal,

@@ -26,6 +26,18 @@ export interface TaskSetup {
   text?: { format: TextFormat; numbered: boolean };
   /** whether blow-ups name the trajectory (the set has more than one) */
   numberTrajectories: boolean;
+  /**
+   * Numbers in the plan's largest task: every buffer is made that large, so
+   * one serves any task and none is dropped for being too small (a dropped
+   * buffer is memory held until the next collection).
+   */
+  bufferValues?: number;
+  /**
+   * Buffers a runner keeps for reuse: as many as can be out at once (the
+   * results the scheduler holds, one being filled, one on its way back), so
+   * that a burst of returns is kept rather than dropped and made again.
+   */
+  spareBuffers?: number;
 }
 
 export interface Task {
@@ -82,13 +94,22 @@ export class TaskRunner {
     const run = this.batch(task);
     const n = task.count * (task.rowTo - task.rowFrom) * run.width;
     const i = this.spare.findIndex((b) => b.byteLength >= 8 * n);
-    const out = i >= 0 ? new Float64Array(this.spare.splice(i, 1)[0], 0, n) : new Float64Array(n);
+    const buffer = i >= 0 ? this.spare.splice(i, 1)[0] : new ArrayBuffer(8 * Math.max(n, this.setup.bufferValues ?? 0));
+    const out = new Float64Array(buffer, 0, n);
     return { out, width: run.width, run };
   }
 
   /** Takes back the buffer of a result that has been written. */
   recycle(buffer: ArrayBuffer): void {
-    if (this.spare.length < 4 && buffer.byteLength > 0) this.spare.push(buffer);
+    if (buffer.byteLength === 0) return;
+    if (this.spare.length < (this.setup.spareBuffers ?? 4)) {
+      this.spare.push(buffer);
+      return;
+    }
+    // Full: keep the larger, so that small buffers (a run's short last chunk) never crowd out the ones tasks need.
+    let smallest = 0;
+    for (let i = 1; i < this.spare.length; i++) if (this.spare[i].byteLength < this.spare[smallest].byteLength) smallest = i;
+    if (this.spare[smallest].byteLength < buffer.byteLength) this.spare[smallest] = buffer;
   }
 
   /** Produces `rows` more rows of the task, from row `done` of it, into `out`. */

@@ -125,6 +125,7 @@ export function parseSimulate(argv: readonly string[]): SimulateArguments {
   const set = setSpec(args.values, names, params);
   const shardText = value('shard');
   const shard = shardText === undefined ? undefined : parseShard(shardText);
+  if (shard && format === 'csv') throw new InputError('--shard writes a part for phasebook merge, which checks the parts by the meta a CSV cannot hold: give --format npz, parquet or json');
   const workersText = value('workers');
   const workers = workersText === undefined ? defaultWorkers() : wholeNumber(workersText, '--workers');
   const spec: RunSpec = {
