@@ -62,6 +62,10 @@ export function createLibrary(page: PageContext): Record<string, unknown> {
     equations: lazy(() => typesetting().then((t) => t.equations)),
     /** tex(source, {display}) → typeset LaTeX */
     tex: lazy(() => typesetting().then((t) => t.tex)),
+    /** chart({label, x, y, series, rules}) → a figure: points, lines, formula curves and bands on linear or log axes, with legend, data table, PNG and CSV */
+    chart: lazy(() => import('./book/chart.ts').then((m) => m.chart)),
+    /** table({columns, rows, caption}) → a table of numbers that scrolls on a phone; rows may be a function, read again every `refresh` seconds */
+    table: lazy(() => import('./book/table.ts').then((m) => m.table)),
     /** stabilityChart({hamiltonian, params, x, y, frequencyParam, boundaries, onSelect}) → Floquet chart computed in a worker */
     stabilityChart: lazy(() => import('./book/stability-chart.ts').then((m) => (options: Parameters<typeof m.stabilityChart>[0]) => m.stabilityChart(options, build()))),
 

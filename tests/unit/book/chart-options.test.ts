@@ -1,0 +1,57 @@
+import { describe, expect, it } from 'vitest';
+import { fileName, resolveChart, toCurve } from '../../../widgets/book/chart-options.ts';
+
+const points: [number, number][] = [
+  [0, 1],
+  [1, 2],
+];
+
+describe('resolveChart: what a cell writes, checked', () => {
+  it('gives points the next palette colour and dots, formulas and lines a line', () => {
+    const c = resolveChart({ label: 'L', series: [{ points }, { formula: (x: number) => x }, { lines: [points, { x: [0, 1], y: [3, 4] }] }, { points, color: 'teal' }] });
+    expect(c.series.map((s) => [s.kind, s.source, s.color])).toEqual([
+      ['dots', 'points', 0],
+      ['line', 'formula', 1],
+      ['line', 'lines', 2],
+      ['dots', 'points', 2],
+    ]);
+    expect(c.series[2].curves.map((k) => Array.from(k.y))).toEqual([
+      [1, 2],
+      [3, 4],
+    ]);
+  });
+
+  it('reads columns {x, y} (typed arrays) as well as [x, y] pairs', () => {
+    const c = resolveChart({ label: 'L', series: [{ x: new Float64Array([1, 2, 3]), y: [4, 5, 6], mark: 'line' }] });
+    expect(Array.from(c.series[0].curves[0].x)).toEqual([1, 2, 3]);
+    expect(c.series[0].kind).toBe('line');
+  });
+
+  it('skips false rules, so a rule can depend on a condition', () => {
+    const c = resolveChart({ label: 'L', series: [], rules: [{ y: 1, label: 'c' }, false, null, { x: 2, faint: true }] });
+    expect(c.rules).toEqual([
+      { y: 1, label: 'c', faint: false },
+      { x: 2, label: '', faint: true },
+    ]);
+  });
+
+  it('says what is wrong, naming the option, rather than drawing nonsense', () => {
+    expect(() => resolveChart({ series: [] })).toThrow(/label must say what the figure shows/);
+    expect(() => resolveChart({ label: 'L', series: [{ points, formula: Math.sin }] })).toThrow(/series\[0\] needs exactly one of .* it has points and formula/);
+    expect(() => resolveChart({ label: 'L', series: [{ label: 'beam', points, colour: 'red' }] })).toThrow(/series\[0\] has no option 'colour'/);
+    expect(() => resolveChart({ label: 'L', series: [{ points, color: 'red' }] })).toThrow(/color must be one of blue, orange/);
+    expect(() => resolveChart({ label: 'L', series: [{ lower: points }] })).toThrow(/a band needs both lower and upper/);
+    expect(() => resolveChart({ label: 'L', series: [], x: { domain: [1, 1] } })).toThrow(/x.domain must be two different finite numbers/);
+    expect(() => resolveChart({ label: 'L', series: [], y: { domain: [0, 1], scale: 'log' } })).toThrow(/log axis must be positive/);
+    expect(() => resolveChart({ label: 'L', series: [], rules: [{ x: 1, y: 2 }] })).toThrow(/rules\[0\] needs exactly one of x or y/);
+    expect(() => resolveChart({ label: 'L', series: [], aspect: 'equal', x: { scale: 'log' } })).toThrow(/needs linear axes/);
+    expect(() => toCurve('series[0]', [[1, 2], [3]])).toThrow(/point 1 is not an \[x, y\] pair/);
+    expect(() => toCurve('series[0]', { x: [1, 2], y: [1] })).toThrow(/x has 2 values but y has 1/);
+  });
+
+  it('names downloads after the label', () => {
+    expect(fileName('Deflection angle against impact parameter')).toBe('deflection-angle-against-impact-parameter');
+    expect(fileName('θ − θ_R (°)')).toBe('r');
+    expect(fileName('—')).toBe('chart');
+  });
+});
