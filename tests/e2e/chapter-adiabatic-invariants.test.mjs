@@ -6,7 +6,7 @@
  */
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { assertAgrees, assertDrawn, resetCell, theoryCheckIn, useChapter, widgetsReady } from './chapter-checks.mjs';
+import { assertAgrees, assertDrawn, chartIn, resetCell, theoryCheckIn, useChapter, widgetsReady } from './chapter-checks.mjs';
 import { typeIntoCell } from './fixture.mjs';
 
 /** @type {import('playwright-core').Page} */
@@ -65,17 +65,30 @@ test('both theory checks agree with formulas computed here, and the plots are dr
 
 test('the sweep over ramp rates fills its figure: linear ramp ∝ ε, smooth ramp exponentially small', async () => {
   // 17 linear-ramp points and 16 smooth-ramp points, drawn as the sweep proceeds
-  const figure = 'svg[aria-label="Change of the action against the ramp rate"]';
-  await page.waitForFunction((selector) => document.querySelectorAll(`${selector} circle`).length === 17 + 16, figure, {
-    timeout: 20_000,
-  });
-  const points = await page.$$eval(`${figure} circle`, (circles) => circles.map((c) => [Number(c.getAttribute('cx')), Number(c.getAttribute('cy'))]));
-  // SVG y grows downwards: the linear ramp's change grows with ε (rises to the right) ...
-  const linear = points.slice(0, 17);
-  assert.ok(linear[16][1] < linear[0][1] - 60, JSON.stringify(linear));
-  // ... and the smooth ramp's first point lies far below the linear ramp's at a similar rate
-  const smooth = points.slice(17);
-  assert.ok(smooth[0][1] > linear[9][1] + 150, `smooth ${smooth[0]}, linear ${linear[9]}`);
+  const label = 'Change of the action against the ramp rate';
+  await page.waitForFunction(
+    (label) => {
+      const series = document.querySelector(`[data-widget="chart"][data-label="${label}"]`)?.chart?.series ?? [];
+      return series.filter((s) => s.kind === 'dots').reduce((n, s) => n + s.curves[0].x.length, 0) === 17 + 16;
+    },
+    label,
+    { timeout: 20_000 },
+  );
+  const { series } = await chartIn(page, label);
+  const points = (name) => {
+    const { x, y } = series.find((s) => s.label === name).values[0];
+    return x.map((e, i) => [e, y[i]]);
+  };
+  // The linear ramp's change grows with ε, by more than two decades over the sweep (the slope-1 law and
+  // the sudden limit: from about 3·10⁻⁴ to about 0.3) ...
+  const linear = points('linear ramp');
+  assert.equal(linear.length, 17);
+  assert.ok(linear[16][1] > 100 * linear[0][1], JSON.stringify(linear));
+  // ... and the smooth ramp's first point lies more than five decades below the linear ramp's at a similar rate
+  const smooth = points('smooth (tanh) ramp');
+  assert.equal(smooth.length, 16);
+  assert.ok(Math.abs(Math.log10(smooth[0][0] / linear[9][0])) < 0.2, `rates ${smooth[0][0]}, ${linear[9][0]}`);
+  assert.ok(smooth[0][1] < 1e-5 * linear[9][1], `smooth ${smooth[0]}, linear ${linear[9]}`);
   assert.deepEqual(problems, []);
 });
 

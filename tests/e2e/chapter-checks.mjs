@@ -161,6 +161,29 @@ export function drawnPixels(page, selector) {
 }
 
 /**
+ * The series of the chart whose label is `label` (widgets/book/chart.ts),
+ * once it has drawn: each with its label, kind ('line', 'dots', 'band'),
+ * number of curves, number of points and its values ({x, y} of each curve);
+ * and the chart's text description.
+ * @param {import('playwright-core').Page} page
+ * @param {string} label
+ */
+export async function chartIn(page, label) {
+  const figure = page.locator(`[data-widget="chart"][data-label="${label}"][data-ready]`);
+  await figure.waitFor({ timeout: 20_000 });
+  return figure.evaluate((f) => ({
+    description: f.querySelector('.pb-chart-description')?.textContent ?? '',
+    series: f.chart.series.map((s) => ({
+      label: s.label,
+      kind: s.kind,
+      curves: s.curves.length,
+      points: s.curves.reduce((n, c) => n + c.x.length, 0),
+      values: s.curves.map((c) => ({ x: Array.from(c.x), y: Array.from(c.y) })),
+    })),
+  }));
+}
+
+/**
  * Asserts that exactly `count` elements match `selector` and that each has
  * drawn more than `min` pixels besides its background (see {@link drawnPixels}).
  * @param {import('playwright-core').Page} page

@@ -6,7 +6,7 @@
  */
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { assertAgrees, assertDrawn, assertLoadsClean, assertNoCellErrors, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
+import { assertAgrees, assertDrawn, chartIn, assertLoadsClean, assertNoCellErrors, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
 import { cell, typeIntoCell } from './fixture.mjs';
 
 const PARAMS = { omega0: 10, alpha: -2, beta: -3 };
@@ -106,10 +106,10 @@ test('the views have drawn, with the measured peak near the theory marker', asyn
   const peak = await page.$eval('[data-widget="spectrum"]', (v) => v.peaks[0].frequency);
   assert.ok(Math.abs(peak - expected) < 0.05, `peak ${peak}`);
   // The frequency–amplitude plot: a formula curve and measured points up to the escape at b = 2.648.
-  const svg = page.locator('svg[aria-label^="Frequency against amplitude"]');
-  assert.equal(await svg.locator('path').count(), 1);
-  assert.ok((await svg.locator('circle').count()) >= 25);
-  assert.match((await svg.textContent()) ?? '', /escape at b = 2\.648/);
+  const figure = await chartIn(page, 'Frequency against amplitude: simulation and formula');
+  assert.equal(figure.series.filter((s) => s.kind === 'line').reduce((n, s) => n + s.curves, 0), 1);
+  assert.ok(figure.series.filter((s) => s.kind === 'dots').reduce((n, s) => n + s.points, 0) >= 25);
+  assert.match(figure.description, /escape at b = 2\.648/);
 });
 
 test('editing b re-runs the checks, which still agree (b = 0.5)', async () => {

@@ -7,7 +7,7 @@
  */
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { assertAgrees, drawnPixels, resetCell, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
+import { assertAgrees, chartIn, drawnPixels, resetCell, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
 import { typeIntoCell } from './fixture.mjs';
 
 /** @type {import('playwright-core').Page} */
@@ -79,13 +79,13 @@ test('both deflection checks agree with formulas computed here; the beam and the
   assert.ok(pixels > 2000, `the trajectory view drew ${pixels} pixels`);
 
   // The envelope figure: 30 trajectories, the parabola, 30 points where y = 2b, the centre.
-  const envelope = page.locator('svg[aria-label="Trajectories of the beam and the parabola that bounds them"]');
-  await envelope.waitFor({ timeout: 10_000 });
-  assert.equal(await envelope.locator('path').count(), 31);
-  assert.equal(await envelope.locator('circle').count(), 31);
+  const envelope = await chartIn(page, 'Trajectories of the beam and the parabola that bounds them');
+  const lines = envelope.series.filter((s) => s.kind === 'line').reduce((n, s) => n + s.curves, 0);
+  const dots = (series) => series.filter((s) => s.kind === 'dots').reduce((n, s) => n + s.points, 0);
+  assert.equal(lines, 31);
+  assert.equal(dots(envelope.series), 31);
   // The deflection figures: a dot per particle off the axis.
-  const dots = await page.locator('svg[aria-label="Deflection angle against impact parameter"] circle').count();
-  assert.equal(dots, 29);
+  assert.equal(dots((await chartIn(page, 'Deflection angle against impact parameter')).series), 29);
   assert.ok((await page.locator('[data-widget="equations"] .katex').count()) > 0, 'H is typeset');
   assert.deepEqual(problems, []);
 });

@@ -6,7 +6,7 @@
  */
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { assertAgrees, assertDrawn, assertLoadsClean, assertNoCellErrors, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
+import { assertAgrees, assertDrawn, chartIn, assertLoadsClean, assertNoCellErrors, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
 import { typeIntoCell } from './fixture.mjs';
 
 const [Q0, P0] = [-10, -10];
@@ -63,13 +63,13 @@ test('the simulation follows the closed form within its rounding error, and its 
 test('the views and the comparison plots have drawn; the Newtonian speed crosses c at t = 16.45', async () => {
   await assertDrawn(page, '[data-widget="time-plot"], [data-widget="phase-portrait"]', 2);
 
-  const velocity = page.locator('svg[aria-label^="Velocity against time"]');
-  assert.equal(await velocity.locator('path').count(), 2);
+  const lines = (figure) => figure.series.filter((s) => s.kind === 'line').reduce((n, s) => n + s.curves, 0);
+  const velocity = await chartIn(page, 'Velocity against time, relativistic and Newtonian');
+  assert.equal(lines(velocity), 2);
   // The Newtonian speed p/m reaches c where |p| = m: t = (±m − p0)/F.
   const crossing = (Math.sqrt(10) - P0) / 0.8;
-  assert.match((await velocity.textContent()) ?? '', new RegExp(`t = ${crossing.toFixed(2)}`));
-  const worldlines = page.locator('svg[aria-label^="Worldlines"]');
-  assert.equal(await worldlines.locator('path').count(), 4);
+  assert.match(velocity.description, new RegExp(`t = ${crossing.toFixed(2)}`));
+  assert.equal(lines(await chartIn(page, 'Worldlines: position against time')), 4);
 });
 
 test('editing the force re-runs the checks, which still agree (F = 2)', async () => {
