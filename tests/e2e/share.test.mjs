@@ -286,3 +286,29 @@ test('links of typical edits: one parameter cell, one H, an added cell, each und
   }
   console.log(`# link lengths on ${site.origin} (characters): ${JSON.stringify(lengths)}`);
 });
+
+test('a cell far down the chapter, not started yet when Share is pressed, still goes in the link with its saved edit', async () => {
+  const UNFORCED = 'unforced = canonicalEquations({dof: 1, hamiltonian: H, params: {...params, f: 0, u: 0}})';
+  const { page, problems } = await openChapter(site, '/introduction/');
+  await typeIntoCell(page, 'unforced', UNFORCED);
+  await page.waitForFunction(() => !document.querySelector('[data-cell-unrun]'));
+  // A new visit at the top of the chapter: the cell is far below and waits to be scrolled to.
+  await page.goto(`${site.origin}/introduction/`);
+  await firstViewReady(page);
+  assert.equal(await cell(page, 'unforced').getAttribute('data-cell-state'), 'waiting');
+  const url = await share(page);
+  assert.match(await page.locator('[data-share-panel] [role=status]').textContent(), /your edits of 1 cell,/);
+  assert.deepEqual(problems, []);
+  await page.close();
+
+  const shared = await friend.context.newPage();
+  const watched = watchPage(shared);
+  await shared.goto(url);
+  await banner(shared).waitFor();
+  assert.deepEqual(await banner(shared).locator('[data-share-goto]').allTextContents(), ['unforced']);
+  await banner(shared).locator('[data-share-goto]').click();
+  await shared.waitForFunction(() => document.querySelector('[data-cell="unforced"]')?.dataset.cellState !== 'waiting');
+  assert.equal(await shownText(shared, 'unforced'), UNFORCED);
+  assert.deepEqual(watched.problems, []);
+  await shared.close();
+});
