@@ -147,6 +147,7 @@ test('in a fresh profile the link shows the edits, marked, runs none of their co
   await page.waitForFunction(() => document.querySelector('[data-cell-added] [data-cell-output]')?.textContent === 'mine = 24');
   assert.equal(await page.evaluate(() => window.sharedCodeRan), true);
   assert.equal(await banner(page).locator('[data-share-run]').count(), 0);
+  assert.equal(await page.evaluate(() => document.activeElement?.hasAttribute('data-share-keep')), true);
   assert.match(await banner(page).textContent(), /shared edits are running/);
   assert.deepEqual(await savedKeys(page), []);
 
@@ -190,7 +191,9 @@ test('Keep these edits asks before replacing the reader’s own saved edits, and
   await confirm.waitFor();
   assert.match(await confirm.textContent(), /saved edits of your own in 1 cell of this chapter \(initial\)\. Keeping the shared edits replaces all of them\./);
   assert.deepEqual(await axeViolations(page), []);
-  await confirm.locator('[data-share-cancel]').click();
+  // The keyboard lands on Cancel: Enter pressed at once replaces nothing.
+  assert.equal(await page.evaluate(() => document.activeElement?.hasAttribute('data-share-cancel')), true);
+  await page.keyboard.press('Enter');
   assert.equal(await confirm.isVisible(), false);
   assert.deepEqual(await editKeys(), own);
 

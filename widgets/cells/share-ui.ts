@@ -171,7 +171,9 @@ export function showSharedBanner(view: SharedView, chapter: ChapterCells): void 
   const run = button('Run shared edits', () => {
     markSharedRun(view.store, ids);
     for (const cell of chapter.cells) if (ids.includes(cell.id) && cell.started) void cell.run();
+    // The button goes; the keyboard's place goes to the next choice rather than to the top of the page.
     run.remove();
+    keep.focus();
     state.textContent = 'The shared edits are running. They are not saved: keep them, or go back to the original.';
     banner.dataset.shareRan = '';
   }, 'data-share-run', true);
@@ -243,5 +245,6 @@ function showConfirm(confirm: HTMLElement, message: string, actions: { label: st
   text.setAttribute('role', 'alert');
   confirm.replaceChildren(text, ...actions.map(({ label, attribute, run }) => button(label, run, attribute)));
   confirm.hidden = false;
-  confirm.querySelector<HTMLButtonElement>('button')?.focus();
+  // On the way out (Cancel), so that Enter pressed at once replaces nothing.
+  [...confirm.querySelectorAll<HTMLButtonElement>('button')].at(-1)?.focus();
 }
