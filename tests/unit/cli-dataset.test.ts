@@ -296,6 +296,34 @@ describe('formats researchers load', () => {
   });
 });
 
+describe("the README's dataset", () => {
+  it.skipIf(!HAS_NUMPY)('is made by its one command and loaded by its three lines of Python, ẋ = (p, −sin q) at every sample (needs python3 with numpy)', async () => {
+    const readme = readFileSync(join(ROOT, 'README.md'), 'utf8');
+    const section = readme.slice(readme.indexOf('## Datasets of many trajectories'));
+    const [command, load] = [/```sh\n([\s\S]*?)```/, /```python\n([\s\S]*?)```/].map((re) => re.exec(section)![1]);
+    expect(load.trim().split('\n')).toHaveLength(3);
+    // The command as a shell runs it, with the CLI of this tree for `npx phasebook`.
+    const shell = spawnSync('sh', ['-c', command.replace(/^npx phasebook /, `node ${JSON.stringify(BIN)} `)], { cwd: dir, encoding: 'utf8' });
+    expect(shell.stderr).toBe('');
+    expect(shell.status).toBe(0);
+    const py = spawnSync('python3', ['-c', `${load}
+import sys
+p, q = x[..., 1], x[..., 0]
+# Hamilton's equations of H = p^2/2 - cos q: q' = p, p' = -sin q (numpy's sin; phasebook's may differ in the last bit).
+print(json.dumps({'t': t.shape, 'x': x.shape, 'dxdt': dxdt.shape, 'H': f['H'].shape, 'count': meta['count'],
+  'dq': float(np.max(np.abs(dxdt[..., 0] - p))), 'dp': float(np.max(np.abs(dxdt[..., 1] + np.sin(q)))),
+  'energy': float(np.max(np.abs(f['H'] - f['H'][:, :1]))), 'dt': float(np.max(np.abs(np.diff(t) - 0.1)))}))`], { cwd: dir, encoding: 'utf8' });
+    expect(py.stderr).toBe('');
+    const got = JSON.parse(py.stdout);
+    expect(got).toMatchObject({ t: [101], x: [1000, 101, 2], dxdt: [1000, 101, 2], H: [1000, 101], count: 1000 });
+    expect(got.dq).toBe(0);
+    expect(got.dp).toBeLessThan(1e-15);
+    // RK 3/8 at dt = 5e-4 keeps H to ~1e-12 over 10 time units on these orbits (its error is O(dt⁴)).
+    expect(got.energy).toBeLessThan(1e-10);
+    expect(got.dt).toBeLessThan(1e-14);
+  }, 60_000);
+});
+
 describe('workers and shards', () => {
   const SET = [...OSCILLATOR, '--sample', '37', '--seed', '9', '--box', 'q=-1:1,p=-1:1', '--t-end', '40', '--every', '197', '--derivatives'];
 
