@@ -19,6 +19,8 @@ export class Readouts {
   private readonly hItem: HTMLElement;
   private readonly driftItem: HTMLElement;
   private readonly driftLabel: HTMLElement;
+  /** after the value, for a batch: "worst of 9", so the count does not run into the number */
+  private readonly driftNote: HTMLElement;
   private tracker: DriftTracker | null = null;
   private last = -Infinity;
 
@@ -31,6 +33,8 @@ export class Readouts {
       h('span', 'pb-readout', {}, typeof label === 'string' ? h('span', 'pb-readout-label', {}, label) : label, value);
     this.hItem = item('H', this.h);
     this.driftItem = item(this.driftLabel, this.drift);
+    this.driftNote = h('span', 'pb-readout-note');
+    this.driftItem.append(this.driftNote);
     this.element = h('div', 'pb-readouts', { 'aria-label': 'Readouts' }, item('t', this.t), this.hItem, this.driftItem);
   }
 
@@ -41,7 +45,8 @@ export class Readouts {
     const batch = simulation.count > 1;
     this.hItem.hidden = !this.tracker.hasEnergy || batch;
     this.driftItem.hidden = !this.tracker.hasEnergy;
-    this.driftLabel.textContent = batch ? `worst |ΔH/H₀| of ${simulation.count}` : '|ΔH/H₀|';
+    this.driftLabel.textContent = '|ΔH/H₀|';
+    this.driftNote.textContent = batch ? `(worst of ${simulation.count} trajectories)` : '';
     this.update(simulation, true);
   }
 

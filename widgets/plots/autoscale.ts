@@ -16,24 +16,28 @@ export const FIT_PADDING = 0.05;
 /**
  * A range containing [lo, hi] padded by `padding` of its span, rounded
  * outward to round numbers. Empty or non-finite data gives [−1, 1]; a single
- * value v gives a range around v.
+ * value v gives a range around v. Padding never crosses zero: data that are
+ * all ≥ 0 (a distance, an energy, a count) keep 0 as the floor, and data
+ * all ≤ 0 keep it as the ceiling.
  */
 export function fit(lo: number, hi: number, kind: YScaleKind, padding = FIT_PADDING): Domain {
   if (!Number.isFinite(lo) || !Number.isFinite(hi) || lo > hi) return [-1, 1];
+  const floor = (padded: number) => (lo >= 0 && hi > 0 ? Math.max(0, padded) : padded);
+  const ceiling = (padded: number) => (hi <= 0 && lo < 0 ? Math.min(0, padded) : padded);
   if (kind === 'symlog') {
     let u0 = symlog(lo);
     let u1 = symlog(hi);
     const pad = u1 > u0 ? (u1 - u0) * padding : 0.5;
     u0 -= pad;
     u1 += pad;
-    return [roundOutward(symexp(u0), -1), roundOutward(symexp(u1), 1)];
+    return [roundOutward(floor(symexp(u0)), -1), roundOutward(ceiling(symexp(u1)), 1)];
   }
   if (lo === hi) {
     const half = lo === 0 ? 1 : Math.abs(lo) * 0.1;
     return niceLinear(lo - half, hi + half);
   }
   const pad = (hi - lo) * padding;
-  return niceLinear(lo - pad, hi + pad);
+  return niceLinear(floor(lo - pad), ceiling(hi + pad));
 }
 
 /**
@@ -46,9 +50,26 @@ export function grow(domain: Domain, lo: number, hi: number, kind: YScaleKind): 
   return fit(Math.min(lo, domain[0]), Math.max(hi, domain[1]), kind, GROWTH_HEADROOM);
 }
 
+/** Rounded outward on d3's nice steps for about 20 ticks: round ends that still hug the data (the axis picks its own, fewer, ticks). */
 function niceLinear(lo: number, hi: number): Domain {
-  const [a, b] = scaleLinear().domain([lo, hi]).nice(8).domain();
+  const [a, b] = scaleLinear().domain([lo, hi]).nice(20).domain();
   return [a, b];
+}
+
+/** How much of a range the data may leave empty before a settled plot fits it again. */
+export const SETTLE_RATIO = 0.8;
+
+/**
+ * The fitted range of data [lo, hi] when it is much tighter than `domain`
+ * (its span, in the axis's own units, under SETTLE_RATIO of the domain's),
+ * else null: growth leaves headroom, and once the data have stopped
+ * growing the plot hugs them again.
+ */
+export function settle(domain: Domain, lo: number, hi: number, kind: YScaleKind): Domain | null {
+  if (!(lo <= hi) || !Number.isFinite(lo) || !Number.isFinite(hi)) return null;
+  const tight = fit(lo, hi, kind);
+  const t = kind === 'symlog' ? symlog : (v: number) => v;
+  return t(tight[1]) - t(tight[0]) < SETTLE_RATIO * (t(domain[1]) - t(domain[0])) ? tight : null;
 }
 
 /**

@@ -1,5 +1,5 @@
 import type { Context } from './canvas.ts';
-import type { Ticks } from './ticks.ts';
+import type { AxisLabels } from './tick-labels.ts';
 
 /**
  * Axes drawn on a canvas from d3 scales: tick positions come from the
@@ -44,26 +44,41 @@ export function spacedTicks(values: readonly number[], position: (v: number) => 
   return kept.map((k) => k.v).sort((a, b) => a - b);
 }
 
-/** Horizontal grid lines and left tick labels for y ticks at `position(v)`. */
-export function drawYAxis(ctx: Context, box: Box, ticks: Ticks, position: (v: number) => number, style: AxisStyle): void {
+/**
+ * Horizontal grid lines at every tick and left labels where given, for
+ * ticks at y = `position(v)`; labels relative to an offset get it written
+ * once, in the corner under them.
+ */
+export function drawYAxis(ctx: Context, box: Box, ticks: AxisLabels, position: (v: number) => number, style: AxisStyle): void {
   ctx.font = style.font;
   ctx.textAlign = 'right';
   ctx.textBaseline = 'middle';
   ctx.lineWidth = 1;
-  for (const v of spacedTicks(ticks.values, position)) {
+  ticks.values.forEach((v, i) => {
     const y = Math.round(position(v)) + 0.5;
-    if (y < box.y - 0.5 || y > box.y + box.height + 0.5) continue;
-    ctx.strokeStyle = v === 0 ? style.axis : style.grid;
-    ctx.globalAlpha = v === 0 ? 0.45 : 1;
+    if (y < box.y - 0.5 || y > box.y + box.height + 0.5) return;
+    const zero = v === 0 && ticks.offset === 0;
+    ctx.strokeStyle = zero ? style.axis : style.grid;
+    ctx.globalAlpha = zero ? 0.45 : 1;
     ctx.beginPath();
     ctx.moveTo(box.x, y);
     ctx.lineTo(box.x + box.width, y);
     ctx.stroke();
     ctx.globalAlpha = 1;
     ctx.fillStyle = style.text;
-    ctx.fillText(ticks.format(v), box.x - 6, y, box.x - 8); // squeezed rather than cut when too wide
+    // squeezed rather than cut if a label is still too wide (tick-labels.ts picks labels that fit)
+    if (ticks.labels[i]) ctx.fillText(ticks.labels[i], box.x - 6, y, box.x - 8);
+  });
+  if (ticks.offsetText) {
+    ctx.textBaseline = 'top';
+    ctx.fillText(`+${ticks.offsetText}`.replace('+−', '−'), box.x - 6, box.y + box.height + 6, box.x - 8);
   }
   frameLine(ctx, style, box.x + 0.5, box.y, box.x + 0.5, box.y + box.height);
+}
+
+/** The room for a y label beside a plot area at x = `left`: from the axis to the canvas edge, less padding. */
+export function yLabelRoom(left: number): number {
+  return left - 8;
 }
 
 /**

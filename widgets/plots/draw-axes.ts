@@ -1,4 +1,5 @@
 import { ticksFor, type Mapping } from './axis-scale.ts';
+import { axisLabels, type AxisLabels } from './tick-labels.ts';
 import type { Theme } from './view-theme.ts';
 
 /** The plotting area of a panel, in CSS pixels of its canvas. */
@@ -29,16 +30,73 @@ export function fontOf(theme: Theme, size: number, weight = 400): string {
   return `${weight} ${size}px ${theme.font}`;
 }
 
+/** Tick labels are drawn at this size (CSS px): the smallest text on a plot, and still 11 px on a phone. */
+export const TICK_FONT = 11;
+
+/** A drawn axis as a reader (or a test) can check it: its range, labels with their positions and widths. */
+export interface AxisReadout {
+  domain: [number, number];
+  kind: 'linear' | 'symlog';
+  /** labelled ticks: text, centre along the axis and width, CSS px */
+  labels: { text: string; at: number; width: number }[];
+  /** the labels are relative to this (written out), '' when absolute */
+  offset: string;
+  font: number;
+  /** y axis: the width its labels had room for */
+  room?: number;
+}
+
+/**
+ * The labels of both axes of a panel, fitted to its size with the canvas's
+ * own text widths (tick-labels.ts). An axis given a tick count in `style`
+ * keeps its scale's own ticks and format instead (a chart's log axis).
+ */
+export function panelLabels(g: CanvasRenderingContext2D, rect: Rect, mx: Mapping, my: Mapping, theme: Theme, style: Pick<AxesStyle, 'xTicks' | 'yTicks'> = {}): { x: AxisLabels; y: AxisLabels } {
+  g.save();
+  g.font = fontOf(theme, TICK_FONT);
+  const measure = (text: string) => g.measureText(text).width;
+  const fitted = (m: Mapping, along: 'x' | 'y', length: number, count: number | undefined): AxisLabels => {
+    if (count !== undefined) {
+      const own = ticksFor(m, count);
+      return { values: own.values, labels: own.labels, offset: 0, offsetText: '' };
+    }
+    return axisLabels(m.kind, m.scale.domain() as [number, number], { along, position: m.scale, length, measure, font: TICK_FONT }, m.c);
+  };
+  const x = fitted(mx, 'x', rect.width, style.xTicks);
+  const y = fitted(my, 'y', rect.height, style.yTicks);
+  g.restore();
+  return { x, y };
+}
+
+/** Between the y labels and the y title, and the title's own height, CSS px. */
+const TITLE_GAP = 6;
+const TITLE_SIZE = 13;
+
+/** The left margin a panel needs for its y labels and title: the default, or more for wide labels. */
+export function leftMarginFor(g: CanvasRenderingContext2D, labels: AxisLabels, theme: Theme): number {
+  g.save();
+  g.font = fontOf(theme, TICK_FONT);
+  const widest = Math.max(0, ...labels.labels.map((l) => (l ? g.measureText(l).width : 0)));
+  g.restore();
+  return Math.max(MARGIN.left, Math.ceil(5 + widest + TITLE_GAP + TITLE_SIZE));
+}
+
+/** An axis title with the offset its labels are relative to: "q − 1×10⁹". */
+function titled(name: string, labels: AxisLabels): string {
+  if (!labels.offsetText) return name;
+  return labels.offset < 0 ? `${name} + ${labels.offsetText.replace('−', '')}` : `${name} − ${labels.offsetText}`;
+}
+
 /**
  * A panel's frame, grid and labelled ticks, drawn from d3 scales onto a
  * canvas layer (one image, so that a PNG download holds the axes too).
+ * Returns what it drew, for the plot's text alternative and for tests.
  */
-export function drawAxes(g: CanvasRenderingContext2D, rect: Rect, mx: Mapping, my: Mapping, theme: Theme, style: AxesStyle, dpr: number): void {
+export function drawAxes(g: CanvasRenderingContext2D, rect: Rect, mx: Mapping, my: Mapping, theme: Theme, style: AxesStyle, dpr: number): { x: AxisReadout; y: AxisReadout } {
   const { left, top, width, height } = rect;
   const right = left + width;
   const bottom = top + height;
-  const x = ticksFor(mx, style.xTicks ?? Math.max(2, Math.round(width / 80)));
-  const y = ticksFor(my, style.yTicks ?? Math.max(2, Math.round(height / 50)));
+  const { x, y } = panelLabels(g, rect, mx, my, theme, style);
   g.save();
   g.lineWidth = 1 / dpr;
   g.strokeStyle = theme.muted;
@@ -59,24 +117,44 @@ export function drawAxes(g: CanvasRenderingContext2D, rect: Rect, mx: Mapping, m
   g.strokeRect(crisp(left, dpr), crisp(top, dpr), Math.round(width * dpr) / dpr, Math.round(height * dpr) / dpr);
   g.globalAlpha = 1;
   g.fillStyle = theme.muted;
-  g.font = fontOf(theme, 11);
+  g.font = fontOf(theme, TICK_FONT);
   g.textAlign = 'center';
   g.textBaseline = 'top';
-  x.values.forEach((v, i) => g.fillText(x.labels[i], mx.scale(v), bottom + 4));
+  const readout = (m: Mapping, labels: AxisLabels, room?: number): AxisReadout => ({
+    domain: m.scale.domain() as [number, number],
+    kind: m.kind,
+    labels: labels.values.flatMap((v, i) => (labels.labels[i] ? [{ text: labels.labels[i], at: m === mx ? xAt(v, labels.labels[i]) : m.scale(v), width: g.measureText(labels.labels[i]).width }] : [])),
+    offset: labels.offsetText,
+    font: TICK_FONT,
+    room,
+  });
+  // a label at either end stays on the canvas rather than running off it
+  const xAt = (v: number, text: string): number => {
+    const half = g.measureText(text).width / 2;
+    return Math.max(half + 1, Math.min(right + MARGIN.right - half - 1, mx.scale(v)));
+  };
+  x.values.forEach((v, i) => x.labels[i] && g.fillText(x.labels[i], xAt(v, x.labels[i]), bottom + 4));
   g.textAlign = 'right';
   g.textBaseline = 'middle';
-  y.values.forEach((v, i) => g.fillText(y.labels[i], left - 5, my.scale(v)));
+  const room = left - 5 - TITLE_GAP - TITLE_SIZE;
+  y.values.forEach((v, i) => y.labels[i] && g.fillText(y.labels[i], left - 5, my.scale(v), Math.max(room, 20)));
+  const drawn = { x: readout(mx, x), y: readout(my, y, room) };
+  const widest = Math.max(0, ...drawn.y.labels.map((l) => l.width));
   g.fillStyle = theme.fg;
   g.font = fontOf(theme, 12, 500);
   g.textAlign = 'center';
   g.textBaseline = 'bottom';
-  g.fillText(style.xLabel, left + width / 2, bottom + 36);
-  g.translate(left - 38, top + height / 2);
+  g.fillText(titled(style.xLabel, x), left + width / 2, bottom + 36);
+  g.translate(left - Math.max(38, 5 + widest + TITLE_GAP), top + height / 2);
   g.rotate(-Math.PI / 2);
   g.textBaseline = 'bottom';
-  g.fillText(style.yLabel, 0, 0);
+  g.fillText(titled(style.yLabel, y), 0, 0);
   g.restore();
+  return drawn;
 }
+
+/** Room the legend leaves at the right end of the top margin, CSS px: the Table button's. */
+export const LEGEND_CLEAR = 60;
 
 export interface LegendItem {
   label: string;
@@ -91,7 +169,8 @@ export function drawLegend(g: CanvasRenderingContext2D, rect: Rect, items: reado
   g.textAlign = 'left';
   const y = rect.top - 11;
   let x = rect.left;
-  const end = rect.left + rect.width;
+  // the stage's top right corner holds the Table button (view-frame.ts)
+  const end = rect.left + rect.width - LEGEND_CLEAR;
   if (title) {
     g.fillStyle = theme.fg;
     g.font = fontOf(theme, 12, 600);

@@ -66,8 +66,9 @@ export function padInterval(lo: number, hi: number, headroom: number, kind: Axis
     b += half;
   }
   const pad = (b - a) * headroom;
-  a = untransform(kind, a - pad, c);
-  b = untransform(kind, b + pad, c);
+  // padding never crosses zero: a quantity that has not been negative keeps 0 as its floor
+  a = untransform(kind, lo >= 0 && hi > 0 ? Math.max(0, a - pad) : a - pad, c);
+  b = untransform(kind, hi <= 0 && lo < 0 ? Math.min(0, b + pad) : b + pad, c);
   if (kind === 'linear') [a, b] = scaleLinear().domain([a, b]).nice(16).domain() as [number, number];
   return [a, b];
 }
@@ -110,7 +111,10 @@ function stretch(oldLo: number, oldHi: number, lo: number, hi: number, factor: n
   const grewHigh = b1 > a1;
   const extra = factor * (a1 - a0) - (b1 - b0);
   if ((!grewLow && !grewHigh) || !(extra > 0)) return [lo, hi];
-  const low = grewLow && grewHigh ? extra / 2 : grewLow ? extra : 0;
+  let low = grewLow && grewHigh ? extra / 2 : grewLow ? extra : 0;
+  // the stretch does not cross zero either; what it cannot add below, it adds above (and the reverse)
+  if (b0 >= 0 && b0 - low < 0) low = b0;
+  if (b1 <= 0 && b1 + (extra - low) > 0) low = extra - -b1;
   return [untransform(kind, b0 - low, c), untransform(kind, b1 + (extra - low), c)];
 }
 

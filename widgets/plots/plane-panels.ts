@@ -89,18 +89,18 @@ export function makePanel(spec: PanelSpec): Panel {
   };
 }
 
-/** The plotting rectangle of panel i of `count` in a width × height canvas. */
-export function panelRect(i: number, count: number, width: number, height: number): Rect {
+/** The plotting rectangle of panel i of `count` in a width × height canvas; `margin` is its left margin (wide y labels need more). */
+export function panelRect(i: number, count: number, width: number, height: number, margin = MARGIN.left): Rect {
   const columns = gridColumns(count, width);
   const rows = Math.ceil(count / columns);
   const cellWidth = width / columns;
   const cellHeight = height / rows;
-  const left = (i % columns) * cellWidth + MARGIN.left;
+  const left = (i % columns) * cellWidth + margin;
   const top = Math.floor(i / columns) * cellHeight + MARGIN.top;
   return {
     left,
     top,
-    width: Math.max(10, cellWidth - MARGIN.left - MARGIN.right),
+    width: Math.max(10, cellWidth - margin - MARGIN.right),
     height: Math.max(10, cellHeight - MARGIN.top - MARGIN.bottom),
   };
 }

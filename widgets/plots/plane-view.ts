@@ -1,7 +1,7 @@
 import type { Simulation } from '../core/simulation.ts';
 import { unseen, type View } from '../simulator/view.ts';
 import type { Mapping } from './axis-scale.ts';
-import { drawAxes, drawLegend } from './draw-axes.ts';
+import { drawAxes, drawLegend, leftMarginFor, MARGIN, panelLabels, type AxisReadout } from './draw-axes.ts';
 import { defaultLook, drawDots, fadeLayer, rescaleImage, strokeRows, type LineStyle } from './plane-draw.ts';
 import { includeRows, liftPens } from './trace.ts';
 import { ageBuckets, Fader, FADE_FRAMES, parseTrail, type TrailOption } from './trail.ts';
@@ -9,6 +9,8 @@ import { growPanel, makePanel, panelRect, placePanel, settlePanel, type Panel, t
 import { gridColumns } from './sizes.ts';
 import { ViewFrame, type Layer } from './view-frame.ts';
 import { seriesColor } from './view-theme.ts';
+import { PlotTable, TEXT_INTERVAL_MS } from './plot-table.ts';
+import { latestValues, rangeText, recordTable, rowsOver, show, TABLE_ROWS, type TableData } from './table-data.ts';
 
 /** Options every plane plot (trajectory, phase portrait) shares. */
 export interface PlaneStyle {
@@ -72,6 +74,11 @@ export class PlaneView implements View {
   private dirty = true;
   /** frames drawn since an extent last grew */
   private quiet = 0;
+  /** each panel's axes as last drawn */
+  axes: { x: AxisReadout; y: AxisReadout }[] = [];
+  private readonly table: PlotTable;
+  /** when the text alternative was last written */
+  private described = -Infinity;
 
   constructor(private readonly definition: PlaneDefinition) {
     const { height } = definition;
@@ -89,6 +96,8 @@ export class PlaneView implements View {
       this.relayout();
       this.compose();
     };
+    this.table = this.frame.addTable(definition.kind === 'trajectory' ? 'trajectory' : 'phase portrait', () => this.tableData());
+    Object.defineProperty(this.frame.element, 'axes', { get: () => this.axes, configurable: true });
   }
 
   get element(): HTMLElement {
@@ -191,15 +200,21 @@ export class PlaneView implements View {
     const { frame } = this;
     const count = this.panels.length;
     const before = this.panels.map((p) => ({ mx: p.mx, my: p.my }));
-    this.panels.forEach((p, i) => placePanel(p, panelRect(i, count, frame.width, frame.height)));
     const g = this.base.context;
+    this.panels.forEach((p, i) => {
+      placePanel(p, panelRect(i, count, frame.width, frame.height));
+      // y labels wider than the default margin (large or tiny numbers) get the room they need
+      const margin = leftMarginFor(g, panelLabels(g, p.rect, p.mx, p.my, frame.theme).y, frame.theme);
+      if (margin > MARGIN.left) placePanel(p, panelRect(i, count, frame.width, frame.height, margin));
+    });
     g.clearRect(0, 0, frame.width, frame.height);
-    for (const panel of this.panels) {
+    this.axes = this.panels.map((panel) => {
       const { spec } = panel;
-      drawAxes(g, panel.rect, panel.mx, panel.my, frame.theme, spec, frame.dpr);
+      const drawn = drawAxes(g, panel.rect, panel.mx, panel.my, frame.theme, spec, frame.dpr);
       const items = spec.legend.map((l) => ({ label: l.label, color: this.color(l.group) }));
       drawLegend(g, panel.rect, items, frame.theme, spec.title);
-    }
+      return drawn;
+    });
     const linear = this.panels.every((p) => p.mx.kind === 'linear' && p.my.kind === 'linear');
     // Rescale the old image, rather than redraw from the record, when the record no longer holds the
     // trail, or when a fading trail is costly to redraw (a large batch): a growing extent must not stall
@@ -288,6 +303,46 @@ export class PlaneView implements View {
     }
     frame.markReady();
     this.dirty = false;
+    const now = performance.now();
+    if (now - this.described >= TEXT_INTERVAL_MS) {
+      this.described = now;
+      frame.describe(this.summary());
+      this.table.refresh(true);
+    }
+  }
+
+  /** The record's columns each panel draws, named as the record names them, for text. */
+  private panelColumns(panel: Panel): { name: string; index: number }[] {
+    const columns = this.simulation?.record.columns ?? [];
+    const out: { name: string; index: number }[] = [];
+    for (let k = 0; k < panel.xs.length; k++) out.push({ name: columns[panel.xs[k]], index: panel.xs[k] }, { name: columns[panel.ys[k]], index: panel.ys[k] });
+    return out;
+  }
+
+  /** The text alternative: what each panel plots, its ranges, and where the motion is now. */
+  private summary(): string {
+    const record = this.simulation?.record;
+    const parts = this.panels.map((panel, i) => {
+      const { spec } = panel;
+      const axes = this.axes[i];
+      const ranges = axes ? `; ${spec.xLabel} ${rangeText(axes.x.domain)}, ${spec.yLabel} ${rangeText(axes.y.domain)}` : '';
+      const now = record ? latestValues(record, this.panelColumns(panel)) : '';
+      const tracks = panel.xs.length > 1 ? ` (${panel.xs.length} tracks)` : '';
+      return `${spec.yLabel} against ${spec.xLabel}${tracks}${ranges}${now ? `; now ${now}` : ''}`;
+    });
+    const t = record && record.length ? `, t = ${show(record.time(record.length - 1))}` : '';
+    return `${this.definition.label}${t}: ${parts.join('. ') || 'nothing drawn'}`;
+  }
+
+  /** The data-table view: the drawn columns at evenly spaced times over the record. */
+  private tableData(): TableData | null {
+    const record = this.simulation?.record;
+    if (!record || record.length === 0 || this.panels.length === 0) return null;
+    const seen = new Set<number>();
+    const columns = this.panels.flatMap((p) => this.panelColumns(p)).filter((c) => !seen.has(c.index) && seen.add(c.index));
+    const t0 = record.time(0);
+    const t1 = record.time(record.length - 1);
+    return recordTable(record, columns, rowsOver(record, t0, t1), `${this.definition.label}: values at ${TABLE_ROWS} times from t = ${show(t0)} to ${show(t1)}`);
   }
 
   private trackCount(): number {

@@ -1,7 +1,7 @@
 import type { Peak } from '../core/peaks.ts';
 import type { Spectrum } from '../core/spectrum.ts';
 import { makeMapping, type Mapping } from './axis-scale.ts';
-import { crisp, drawAxes, drawLegend, fontOf, MARGIN, type LegendItem, type Rect } from './draw-axes.ts';
+import { crisp, drawAxes, drawLegend, fontOf, leftMarginFor, MARGIN, panelLabels, type AxisReadout, type LegendItem, type Rect } from './draw-axes.ts';
 import { traceSeries } from './spectrum-trace.ts';
 import { seriesColor, type Theme } from './view-theme.ts';
 
@@ -21,8 +21,8 @@ export interface SpectrumPicture {
 }
 
 /** The frequency axis and the amplitude axis of a spectrum in a width × height canvas. */
-export function spectrumMappings(width: number, height: number, picture: Pick<SpectrumPicture, 'maxFrequency' | 'yMax' | 'show'>): { rect: Rect; mx: Mapping; my: Mapping } {
-  const rect = { left: MARGIN.left, top: MARGIN.top, width: width - MARGIN.left - MARGIN.right, height: height - MARGIN.top - MARGIN.bottom };
+export function spectrumMappings(width: number, height: number, picture: Pick<SpectrumPicture, 'maxFrequency' | 'yMax' | 'show'>, left = MARGIN.left): { rect: Rect; mx: Mapping; my: Mapping } {
+  const rect = { left, top: MARGIN.top, width: width - left - MARGIN.right, height: height - MARGIN.top - MARGIN.bottom };
   const mx = makeMapping('linear', [0, picture.maxFrequency], [rect.left, rect.left + rect.width]);
   const y0 = picture.show === 'magnitude' ? 0 : -picture.yMax;
   const my = makeMapping('linear', [y0, picture.yMax], [rect.top + rect.height, rect.top]);
@@ -34,11 +34,18 @@ export function lastBin(s: Spectrum, maxFrequency: number): number {
   return Math.min(s.frequency.length - 1, Math.ceil(maxFrequency / s.binWidth) + 1);
 }
 
-/** Draws axes, the chosen lines, the theory marker and numbered peak marks. */
-export function drawSpectrum(g: CanvasRenderingContext2D, width: number, height: number, picture: SpectrumPicture, theme: Theme, dpr: number): void {
+/** The axes of a spectrum, with a left margin wide enough for the amplitude labels. */
+export function fittedMappings(g: CanvasRenderingContext2D, width: number, height: number, picture: Pick<SpectrumPicture, 'maxFrequency' | 'yMax' | 'show'>, theme: Theme): { rect: Rect; mx: Mapping; my: Mapping } {
+  const first = spectrumMappings(width, height, picture);
+  const margin = leftMarginFor(g, panelLabels(g, first.rect, first.mx, first.my, theme).y, theme);
+  return margin > MARGIN.left ? spectrumMappings(width, height, picture, margin) : first;
+}
+
+/** Draws axes, the chosen lines, the theory marker and numbered peak marks; returns the axes as drawn. */
+export function drawSpectrum(g: CanvasRenderingContext2D, width: number, height: number, picture: SpectrumPicture, theme: Theme, dpr: number): { x: AxisReadout; y: AxisReadout } {
   const { spectrum: s, show } = picture;
-  const { rect, mx, my } = spectrumMappings(width, height, picture);
-  drawAxes(g, rect, mx, my, theme, { xLabel: 'frequency f (cycles per time unit)', yLabel: show === 'magnitude' ? 'amplitude' : 'amplitude, Re, Im' }, dpr);
+  const { rect, mx, my } = fittedMappings(g, width, height, picture, theme);
+  const axes = drawAxes(g, rect, mx, my, theme, { xLabel: 'frequency f (cycles per time unit)', yLabel: show === 'magnitude' ? 'amplitude' : 'amplitude, Re, Im' }, dpr);
   const magnitude = theme.accent;
   const real = show === 'both' ? seriesColor(theme, 1) : theme.accent;
   const legend: LegendItem[] = [];
@@ -66,6 +73,7 @@ export function drawSpectrum(g: CanvasRenderingContext2D, width: number, height:
   if (picture.theory) drawTheory(g, rect, mx, picture.theory, theme, dpr);
   g.restore();
   drawPeakMarks(g, rect, mx, my, picture.peaks, picture.maxFrequency, theme);
+  return axes;
 }
 
 function drawTheory(g: CanvasRenderingContext2D, rect: Rect, mx: Mapping, theory: { frequency: number; label: string }, theme: Theme, dpr: number): void {

@@ -1,7 +1,9 @@
 import type { Peak, Spectrum, WindowName } from '../core/spectrum.ts';
 import type { Simulation } from '../core/simulation.ts';
 import type { View } from '../simulator/view.ts';
-import { drawAxes, fontOf } from './draw-axes.ts';
+import { drawAxes, fontOf, type AxisReadout } from './draw-axes.ts';
+import { PlotTable } from './plot-table.ts';
+import { show, type TableData } from './table-data.ts';
 import { analyse, displaySpectrum, theoryOf } from './spectrum-analysis.ts';
 import { basisLine, compareWithTheory, fixed, frequencyDecimals, nearestPeak, peakLine, significant } from './peak-readout.ts';
 import { columnsOf } from './plane-columns.ts';
@@ -77,6 +79,11 @@ class SpectrumViewImpl implements SpectrumView {
   private waiting = `Not enough samples yet`;
   private maxFrequency: number | undefined;
   private yMax: number | undefined;
+  private readonly table: PlotTable;
+  /** the axes as last drawn */
+  private axes: { x: AxisReadout; y: AxisReadout } | null = null;
+  /** what the spectrum was computed from, for the table's caption */
+  private basis = '';
   peaks: readonly Peak[] = [];
   spectrum: Spectrum | null = null;
 
@@ -104,6 +111,8 @@ class SpectrumViewImpl implements SpectrumView {
     if (options.controls !== false) element.prepend(controlRow(this.seriesSelect, windowSelect, showSelect));
     element.append(this.readout.element);
     Object.defineProperty(element, 'peaks', { get: () => this.peaks, configurable: true });
+    Object.defineProperty(element, 'axes', { get: () => (this.axes ? [this.axes] : []), configurable: true });
+    this.table = this.frame.addTable('spectrum', () => this.tableData());
     this.frame.onChange = () => this.simulation && this.render();
   }
 
@@ -167,6 +176,7 @@ class SpectrumViewImpl implements SpectrumView {
       }
     }
     this.render();
+    this.table.refresh(true);
     this.cost = performance.now() - this.computedAt;
   }
 
@@ -206,6 +216,7 @@ class SpectrumViewImpl implements SpectrumView {
     const strongest = peaks.length ? `; strongest peak at f = ${fixed(peaks[0].frequency, frequencyDecimals(choice.duration))}` : '';
     this.frame.canvas.setAttribute('aria-label', `Frequency spectrum of ${this.series}${strongest}${markerText(theory)}`);
     const t0 = record.time(choice.from);
+    this.basis = `${this.window === 'hamming' ? 'Hamming window' : 'no window'}, t = ${fixed(t0, 2)} … ${fixed(t0 + choice.duration, 2)}`;
     const near = theory && peaks.length ? nearestPeak(peaks, theory.frequency) : 0;
     this.readout.show(
       peaks.map((p) => peakLine(p, choice.duration)),
@@ -225,16 +236,29 @@ class SpectrumViewImpl implements SpectrumView {
     this.readout.show([], '', undefined, message);
   }
 
+  /** The data-table view: the peaks read out, strongest first, and the theory's line when there is one. */
+  private tableData(): TableData | null {
+    if (!this.picture || this.peaks.length === 0) return null;
+    const theory = this.picture.theory;
+    const rows = this.peaks.map((p, i) => [String(i + 1), show(p.frequency), show(2 * Math.PI * p.frequency), show(p.amplitude)]);
+    if (theory) rows.push([`dashed line: ${theory.label}`, show(theory.frequency), show(2 * Math.PI * theory.frequency), '']);
+    return {
+      caption: `Peaks of the spectrum of ${this.series} (${this.basis})`,
+      head: ['peak', 'f (cycles per time unit)', 'ω = 2πf', 'amplitude'],
+      rows,
+    };
+  }
+
   private render(): void {
     const { frame } = this;
     frame.clear();
     const g = frame.context;
     if (this.picture) {
-      drawSpectrum(g, frame.width, frame.height, this.picture, frame.theme, frame.dpr);
+      this.axes = drawSpectrum(g, frame.width, frame.height, this.picture, frame.theme, frame.dpr);
     } else {
       const empty = { maxFrequency: this.options.maxFrequency ?? 1, yMax: 1, show: 'magnitude' as const };
       const { rect, mx, my } = spectrumMappings(frame.width, frame.height, empty);
-      drawAxes(g, rect, mx, my, frame.theme, { xLabel: 'frequency f (cycles per time unit)', yLabel: 'amplitude' }, frame.dpr);
+      this.axes = drawAxes(g, rect, mx, my, frame.theme, { xLabel: 'frequency f (cycles per time unit)', yLabel: 'amplitude' }, frame.dpr);
       g.save();
       g.fillStyle = frame.theme.muted;
       g.font = fontOf(frame.theme, 13);

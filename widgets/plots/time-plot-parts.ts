@@ -1,10 +1,10 @@
 import { scaleLinear } from './scale.ts';
 import { h as el } from '../controls/dom.ts';
-import { drawXFrame, drawXTicks, drawYAxis, MARGIN, type Box } from './axes.ts';
+import { drawXFrame, drawXTicks, drawYAxis, MARGIN, yLabelRoom, type Box } from './axes.ts';
 import { multiples, timeTicks } from './time-axis.ts';
 import type { Context } from './canvas.ts';
 import type { Theme } from './colors.ts';
-import { axisTicks } from './ticks.ts';
+import { axisLabels, type AxisLabels } from './tick-labels.ts';
 import { yScale, type Domain, type YScaleKind } from './y-map.ts';
 
 /** The time windows offered, in time units across the plot. */
@@ -37,12 +37,28 @@ export interface AxesState {
  * pixels): grid, y axis, the t axis line and its name. Redrawn only when the
  * y range, size or theme changes.
  */
-export function drawTimeFrame(ctx: Context, state: AxesState, theme: Theme, width: number, height: number): void {
+export function drawTimeFrame(ctx: Context, state: AxesState, theme: Theme, width: number, height: number): AxisLabels {
   const { box, kind, domain, inset } = state;
   ctx.clearRect(0, 0, width, height);
   const y = yScale(kind, domain, [box.y + box.height * (1 - inset), box.y + box.height * inset]);
-  drawYAxis(ctx, box, axisTicks(kind, domain, Math.max(2, Math.floor(box.height / 36))), y, theme);
+  ctx.font = theme.font;
+  const labels = axisLabels(kind, domain, {
+    along: 'y',
+    position: y,
+    length: box.height,
+    measure: (text) => ctx.measureText(text).width,
+    font: fontSize(theme.font),
+    room: yLabelRoom(box.x),
+  });
+  drawYAxis(ctx, box, labels, y, theme);
   drawXFrame(ctx, box, theme, 't');
+  return labels;
+}
+
+/** The pixel size of a canvas font such as '11px Inter'. */
+export function fontSize(font: string): number {
+  const m = /(\d+(?:\.\d+)?)px/.exec(font);
+  return m ? Number(m[1]) : 11;
 }
 
 /** The top of the band under the plot that holds the t ticks, in CSS pixels. */

@@ -10,6 +10,8 @@ import type { TimeRenderer, UpdateResult } from './time-renderer.ts';
 import { timePlotHeight } from './sizes.ts';
 import { listenScroll, ScrubBar } from './time-scroll.ts';
 import { TimeStage } from './time-stage.ts';
+import { PlotTable, TEXT_INTERVAL_MS } from './plot-table.ts';
+import { rangeText, recordTable, rowsOver, show, type TableData } from './table-data.ts';
 import type { YScaleKind } from './y-map.ts';
 
 export interface TimePlotOptions {
@@ -32,6 +34,8 @@ export interface TimePlotOptions {
 }
 
 const FALLBACK_WIDTH = 640;
+
+let summaries = 0;
 
 /**
  * The paper's scrolling graph (§5.1): every component of the state and every
@@ -58,6 +62,9 @@ export class TimePlot implements View {
   private historyEnd: number | null = null;
   private playing = true;
   private lastScrub = 0;
+  private readonly table: PlotTable;
+  private readonly summary: HTMLElement;
+  private lastSummary = -Infinity;
 
   constructor(private readonly options: TimePlotOptions = {}) {
     if (options.scale !== undefined && !['linear', 'log', 'symlog'].includes(options.scale)) {
@@ -79,9 +86,16 @@ export class TimePlot implements View {
     const refit = el('button', 'pb-button pb-small', { type: 'button', title: 'Fit the y range to what is shown' }, 'Refit');
     const windows = el('select', 'pb-select', { 'aria-label': 'Time window' });
     for (const w of [...new Set([...WINDOWS, window])].sort((a, b) => a - b)) windows.append(new Option(`${w} t`, String(w), false, w === window));
+    this.table = new PlotTable('time plot', () => this.tableData());
     const bar = el('div', 'pb-plot-bar', {}, this.legendSlot, el('span', 'pb-spacer'), this.logButton, refit, windows);
     this.scrub = new ScrubBar((t) => this.scrollTo(this.renderer.columnOf(t) + 1), () => this.goLive());
-    this.element = el('figure', 'pb-plot pb-time-plot', { 'data-widget': 'time-plot', 'aria-label': label }, bar, this.stage.element, this.scrub.element);
+    // under the plot, beside Live: the bar above is full on a phone
+    this.scrub.element.append(this.table.button);
+    // The text alternative: what is plotted, its ranges and the latest values, rewritten a few times a second (not live: it would chatter).
+    this.summary = el('p', 'pb-visually-hidden', { id: `pb-time-summary-${++summaries}` });
+    this.stage.element.setAttribute('aria-describedby', this.summary.id);
+    this.element = el('figure', 'pb-plot pb-time-plot', { 'data-widget': 'time-plot', 'aria-label': label }, bar, this.stage.element, this.summary, this.scrub.element, this.table.element);
+    Object.defineProperty(this.element, 'axes', { get: () => [this.stage.axes(this.historyEnd ?? this.renderer.end, this.currentTheme())], configurable: true });
 
     this.logButton.addEventListener('click', () => this.setKind(this.renderer.kind === 'symlog' ? 'linear' : 'symlog'));
     refit.addEventListener('click', () => this.refit());
@@ -231,6 +245,55 @@ export class TimePlot implements View {
       this.lastScrub = now;
       this.updateScrub();
     }
+    if (force || now - this.lastSummary >= TEXT_INTERVAL_MS) {
+      this.lastSummary = now;
+      this.describe();
+      this.table.refresh(true);
+    }
+  }
+
+  /** The visible series' record columns, with their names. */
+  private shownColumns(): { name: string; index: number }[] {
+    const columns = this.simulation?.record.columns ?? [];
+    return (this.plan?.groups ?? []).flatMap((g, i) => (this.visible[i] ? g.columns.map((c) => ({ name: columns[c], index: c })) : []));
+  }
+
+  /** The time window on show, [t0, t1]. */
+  private shownTimes(): [number, number] {
+    const r = this.renderer;
+    const end = this.historyEnd ?? r.end;
+    return [r.timeOf(end - r.width), r.timeOf(end)];
+  }
+
+  /** Rewrites the text alternative: the series, the t window, the y range and the values at its right edge. */
+  private describe(): void {
+    const record = this.simulation?.record;
+    const shown = this.shownColumns();
+    const names = (this.plan?.groups ?? []).filter((_, i) => this.visible[i]).map((g) => g.name);
+    const [t0, t1] = this.shownTimes();
+    const r = this.renderer;
+    const scale = r.kind === 'symlog' ? 'symmetric log scale' : 'linear scale';
+    let now = '';
+    if (record && record.length) {
+      const [, end] = record.range(-Infinity, t1);
+      const row = Math.max(0, end - 1);
+      const listed = shown.slice(0, 4).map((c) => `${c.name} = ${show(record.get(row, c.index))}`);
+      if (shown.length > 4) listed.push(`and ${shown.length - 4} more`);
+      now = listed.length ? ` At t = ${show(record.time(row))}: ${listed.join(', ')}.` : '';
+    }
+    const what = names.length ? `${names.join(', ')} against t` : 'no series shown';
+    const text = `${what}, t from ${show(Math.max(t0, record?.length ? record.time(0) : t0))} to ${show(t1)}; y ${rangeText(r.domain)}, ${scale}.${now}`;
+    if (this.summary.textContent !== text) this.summary.textContent = text;
+  }
+
+  /** The data-table view: the visible series at evenly spaced times across the window on show. */
+  private tableData(): TableData | null {
+    const record = this.simulation?.record;
+    const shown = this.shownColumns();
+    if (!record || record.length === 0 || shown.length === 0) return null;
+    const [t0, t1] = this.shownTimes();
+    const rows = rowsOver(record, t0, t1);
+    return recordTable(record, shown, rows, `${this.options.label ?? 'Time plot'}: values at ${rows.length} times across the window shown`);
   }
 
   /** A window's right edge kept within the record. */

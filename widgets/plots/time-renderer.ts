@@ -1,5 +1,5 @@
 import type { TrajectoryRecord } from '../core/record.ts';
-import { fit, grow } from './autoscale.ts';
+import { fit, grow, settle } from './autoscale.ts';
 import type { Context, Surface, SurfaceFactory } from './canvas.ts';
 import { ColumnDecimator, pendingRange, strokeColumns } from './decimate.ts';
 import { ScrollBuffer, SLOTS, viewLeft } from './scroll-buffer.ts';
@@ -37,6 +37,9 @@ export class TimeRenderer {
   private history: ColumnDecimator;
   private historyTarget: Context | null = null;
   private historyLeft = 0;
+  /** the live trace's end (column) when the range last changed, and when it was last checked for settling */
+  private changedAt = 0;
+  private checkedAt = 0;
 
   constructor(
     private readonly create: SurfaceFactory,
@@ -100,6 +103,7 @@ export class TimeRenderer {
     this.origin = origin;
     this.end = 0;
     this.seen = 0;
+    this.changedAt = this.checkedAt = 0;
     this.fitted = !this.autoscale;
     this.buffer?.reset();
     this.live.reset();
@@ -120,8 +124,10 @@ export class TimeRenderer {
       if (next) {
         this.setDomain(next);
         this.redraw(record);
+        this.changedAt = this.end;
         return 'rescaled';
       }
+      if (this.settleRange(record)) return 'rescaled';
     }
     this.end = Math.max(this.end, this.columnOf(record.time(to - 1)) + 1);
     const cut = this.end - this.width - this.pad;
@@ -132,6 +138,25 @@ export class TimeRenderer {
     }
     this.feed(record, from, to, this.live);
     return 'drawn';
+  }
+
+  /**
+   * After a whole window without growth, fits the range again to the data
+   * in view if growth left it much too loose (checked every eighth of a
+   * window): a running plot hugs its data, while one that keeps growing is
+   * never shrunk between growths. Returns whether it refitted (and redrew).
+   */
+  private settleRange(record: TrajectoryRecord): boolean {
+    if (this.end - this.changedAt < this.width || this.end - this.checkedAt < this.width / 8) return false;
+    this.checkedAt = this.end;
+    const [from] = record.range(this.timeOf(this.end - this.width), Infinity);
+    const [lo, hi] = this.extent(record, from, record.length);
+    const next = settle(this.domain, lo, hi, this.kind);
+    if (!next) return false;
+    this.setDomain(next);
+    this.redraw(record);
+    this.changedAt = this.end;
+    return true;
   }
 
   /** Redraws the live window from the record, after a change of size, series or range. */

@@ -1,11 +1,14 @@
 import type { TrajectoryRecord } from '../core/record.ts';
-import { MARGIN } from './axes.ts';
+import { MARGIN, yLabelRoom } from './axes.ts';
 import { context2d, createSurface, sizeCanvas, type Surface } from './canvas.ts';
 import type { Theme } from './colors.ts';
-import { TimeAxisStrips } from './time-axis.ts';
-import { compositePlot, drawTimeFrame, drawTimeTicks, el, plotBox, xBandTop, type AxesState } from './time-plot-parts.ts';
+import { multiples, TimeAxisStrips, timeTicks } from './time-axis.ts';
+import { compositePlot, drawTimeFrame, drawTimeTicks, el, fontSize, plotBox, xBandTop, type AxesState } from './time-plot-parts.ts';
+import type { AxisReadout } from './draw-axes.ts';
+import { scaleLinear } from './scale.ts';
+import type { AxisLabels } from './tick-labels.ts';
 import { TimeRenderer } from './time-renderer.ts';
-import type { YScaleKind } from './y-map.ts';
+import { yScale, type YScaleKind } from './y-map.ts';
 
 /** CSS pixels the t labels may show left of the plot area: enough for a label at its left edge, not for the next. */
 const STRIP_LEFT = 8;
@@ -35,6 +38,8 @@ export class TimeStage {
   private readonly stripX = new Float64Array(3).fill(NaN);
   private frameKey = '';
   private bandKey = '';
+  /** the y axis's ticks and labels as last drawn */
+  yLabels: AxisLabels | null = null;
 
   constructor(
     readonly cssHeight: number,
@@ -106,7 +111,7 @@ export class TimeStage {
     const r = this.renderer;
     r.place(move(this.tileX, 0));
     this.strips.place(r.end, r, theme, move(this.stripX, STRIP_LEFT - this.strips.spill / this.ratio));
-    this.drawFrame(theme, this.axes(r.left));
+    this.drawFrame(theme, this.axes0(r.left));
   }
 
   /** Shows the window of columns [end − width, end) drawn from the record, with its t ticks. */
@@ -114,7 +119,7 @@ export class TimeStage {
     this.setMode(false);
     const r = this.renderer;
     r.renderWindow(context2d(this.history), record, end);
-    const state = this.axes(end - r.width);
+    const state = this.axes0(end - r.width);
     this.drawFrame(theme, state);
     const key = `${end} ${r.width} ${r.window} ${this.frameKey}`;
     if (key === this.bandKey) return;
@@ -152,7 +157,7 @@ export class TimeStage {
     this.history.hidden = this.band.hidden = live;
   }
 
-  private axes(left: number): AxesState {
+  private axes0(left: number): AxesState {
     const r = this.renderer;
     return { box: plotBox(this.cssWidth, this.cssHeight), kind: r.kind, domain: r.domain, inset: r.inset, t0: r.timeOf(left), t1: r.timeOf(left + r.width) };
   }
@@ -164,7 +169,40 @@ export class TimeStage {
     this.frameKey = key;
     const ctx = context2d(this.frame);
     ctx.setTransform(this.ratio, 0, 0, this.ratio, 0, 0);
-    drawTimeFrame(ctx, state, theme, this.cssWidth, this.cssHeight);
+    this.yLabels = drawTimeFrame(ctx, state, theme, this.cssWidth, this.cssHeight);
+  }
+
+  /** The axes as a reader sees them: y labels (and the t labels of the window shown) with positions and widths, CSS px. */
+  axes(end: number, theme: Theme): { x: AxisReadout; y: AxisReadout } {
+    const r = this.renderer;
+    const state = this.axes0(end - r.width);
+    const { box } = state;
+    const ctx = context2d(this.frame);
+    ctx.save();
+    ctx.font = theme.font;
+    const font = fontSize(theme.font);
+    const width = (text: string) => ctx.measureText(text).width;
+    const y = yScale(state.kind, state.domain, [box.y + box.height * (1 - state.inset), box.y + box.height * state.inset]);
+    const labels = this.yLabels ?? { values: [], labels: [], offset: 0, offsetText: '' };
+    const yAxis: AxisReadout = {
+      domain: [state.domain[0], state.domain[1]],
+      kind: state.kind,
+      labels: labels.values.flatMap((v, i) => (labels.labels[i] ? [{ text: labels.labels[i], at: y(v), width: width(labels.labels[i]) }] : [])),
+      offset: labels.offsetText,
+      font,
+      room: yLabelRoom(box.x),
+    };
+    const { step, format } = timeTicks(r.window, box.width);
+    const x = scaleLinear().domain([state.t0, state.t1]).range([box.x, box.x + box.width]);
+    const xAxis: AxisReadout = {
+      domain: [state.t0, state.t1],
+      kind: 'linear',
+      labels: multiples(state.t0, state.t1 + 1e-9 * step, step).map((t) => ({ text: format(t), at: x(t), width: width(format(t)) })),
+      offset: '',
+      font,
+    };
+    ctx.restore();
+    return { x: xAxis, y: yAxis };
   }
 
   /** A tile or axis strip of a scroll ring: a canvas the page moves rather than repaints. */

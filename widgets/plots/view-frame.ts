@@ -1,5 +1,7 @@
 import { pixelRatio } from './canvas.ts';
 import { watchTheme } from './colors.ts';
+import { PlotTable } from './plot-table.ts';
+import type { TableData } from './table-data.ts';
 import { readTheme, sameTheme, type Theme } from './view-theme.ts';
 
 /** An offscreen canvas kept at the frame's size, with its context scaled to CSS pixels. */
@@ -66,6 +68,24 @@ export class ViewFrame {
     this.theme = readTheme(element);
     this.measure(true);
     this.observe();
+  }
+
+  /**
+   * The plot's data-table view: a "Table" button in the top right corner of
+   * the stage (the margin above the plot, which the legend leaves free) and
+   * the table under the plot, shown while the button is pressed.
+   */
+  addTable(name: string, data: () => TableData | null): PlotTable {
+    const table = new PlotTable(name, data);
+    table.button.classList.add('pb-table-corner');
+    this.stage.append(table.button);
+    this.element.append(table.element);
+    return table;
+  }
+
+  /** Sets the canvas's text alternative: what is shown and the current values (the caller keeps it to a few times a second). */
+  describe(text: string): void {
+    if (this.canvas.getAttribute('aria-label') !== text) this.canvas.setAttribute('aria-label', text);
   }
 
   /** A new offscreen layer of the frame's size. */

@@ -38,10 +38,19 @@ describe('extent', () => {
   });
 
   it('padInterval(lo, hi, headroom) pads each side and rounds outward to tick values', () => {
-    const [a, b] = padInterval(0.3, 9.7, 0.08);
-    expect(a).toBeLessThanOrEqual(0.3 - 0.08 * 9.4);
-    expect(b).toBeGreaterThanOrEqual(9.7 + 0.08 * 9.4);
-    expect([a, b]).toEqual([-0.5, 10.5]);
+    const [a, b] = padInterval(-0.3, 9.7, 0.08);
+    expect(a).toBeLessThanOrEqual(-0.3 - 0.08 * 10);
+    expect(b).toBeGreaterThanOrEqual(9.7 + 0.08 * 10);
+    expect([a, b]).toEqual([-2, 11]);
+  });
+
+  it('padInterval keeps 0 as the floor of data that are never negative, and as the ceiling of data never positive', () => {
+    // a distance from 0.3 to 9.7: padding 8% would reach −0.45, a value it cannot take
+    expect(padInterval(0.3, 9.7, 0.08)).toEqual([0, 10.5]);
+    expect(padInterval(-9.7, -0.3, 0.08)).toEqual([-10.5, 0]);
+    expect(padInterval(0.01, 80, 0.25, 'symlog')[0]).toBe(0);
+    // data crossing zero are padded on both sides as before
+    expect(padInterval(-0.3, 9.7, 0.08)[0]).toBeLessThan(-0.3);
   });
 
   it('padInterval(v, v, h) gives a single value a width of 10% of its size each way', () => {

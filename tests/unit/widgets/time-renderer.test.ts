@@ -106,4 +106,42 @@ describe('plots/time-renderer', () => {
     expect(renderer.domain[1]).toBeLessThan(2);
     expect(renderer.domain[0]).toBeGreaterThan(-2);
   });
+
+  it('TimeRenderer hugs the data again once a whole window has passed without growth', () => {
+    const { renderer, record } = setup(10, 200);
+    record.push([0, 1, 0]);
+    renderer.update(record); // the first sample alone: a narrow range around q = 1
+    // a cosine of amplitude 1, fed a frame at a time: the range grows, with headroom, as q swings down
+    let t = 0;
+    const frame = (): string => {
+      for (let k = 0; k < 10; k++) {
+        t += 0.005;
+        record.push([t, Math.cos(t), -Math.sin(t)]);
+      }
+      return renderer.update(record);
+    };
+    while (t < 4) frame();
+    const grown = renderer.domain;
+    expect(grown[1] - grown[0]).toBeGreaterThan(2.5);
+    // nothing new leaves the range: after a window (10 time units) it is fitted to what is in view
+    while (t < 16) frame();
+    const [a, b] = renderer.domain;
+    expect(a).toBeLessThanOrEqual(-1);
+    expect(b).toBeGreaterThanOrEqual(1);
+    expect(b - a).toBeLessThanOrEqual(2.4);
+    // and then left alone
+    while (t < 30) expect(frame()).not.toBe('rescaled');
+  });
+
+  it('TimeRenderer never shrinks a range that keeps growing (exponential growth)', () => {
+    const { renderer, record } = setup(10, 200);
+    let span = 0;
+    for (let t = 0; t < 40; t += 0.05) {
+      record.push([t, Math.exp(0.3 * t) * Math.cos(3 * t), 0]);
+      renderer.update(record);
+      const now = renderer.domain[1] - renderer.domain[0];
+      expect(now).toBeGreaterThanOrEqual(span);
+      span = now;
+    }
+  });
 });

@@ -1,0 +1,345 @@
+/**
+ * Plots that read (issue 10): axis labels that never touch or get cut, at
+ * any magnitude, on the built pages; autoscale that hugs the data and keeps
+ * a quantity that cannot be negative above zero; symlog axes labelled at
+ * every decade; each plot's text alternative and data-table view; every
+ * simulator fitting a 360 px phone with axis text of at least 11 px.
+ *
+ * Axes are read through each plot element's `axes` property (the labels as
+ * drawn: text, position and measured width in CSS px, and the font size),
+ * so overlap is judged with the browser's own text widths.
+ */
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { after, before, test } from 'node:test';
+import { cellsReady, openChapter, openSite, typeIntoCell } from './fixture.mjs';
+
+/** @type {Awaited<ReturnType<typeof openSite>>} */
+let site;
+before(async () => (site = await openSite()));
+after(() => site?.close());
+
+const PLOTS = '[data-widget="time-plot"], [data-widget="phase-portrait"], [data-widget="trajectory"], [data-widget="spectrum"]';
+
+/** Every plot in `root` (a selector) with its axes as drawn. */
+async function plotAxes(page, root) {
+  return page.evaluate(
+    ([root, selector]) =>
+      [...document.querySelectorAll(root)].flatMap((r) =>
+        [...r.querySelectorAll(selector)].map((el) => ({ kind: el.dataset.widget, axes: JSON.parse(JSON.stringify(el.axes ?? [])) })),
+      ),
+    [root, PLOTS],
+  );
+}
+
+/**
+ * Problems with one axis as drawn: labels closer than their widths (x) or
+ * their height (y), y labels wider than the room beside the plot, text
+ * under 11 px, or labels written out to more than 10 characters.
+ */
+function axisProblems(name, axis, along) {
+  const out = [];
+  if (axis.font < 11) out.push(`${name}: ${axis.font} px text`);
+  const labels = [...axis.labels].sort((a, b) => a.at - b.at);
+  for (let i = 1; i < labels.length; i++) {
+    const gap = labels[i].at - labels[i - 1].at;
+    const needed = along === 'x' ? (labels[i].width + labels[i - 1].width) / 2 + 2 : axis.font;
+    if (gap < needed) out.push(`${name}: “${labels[i - 1].text}” and “${labels[i].text}” ${gap.toFixed(1)} px apart, need ${needed.toFixed(1)}`);
+  }
+  for (const l of labels) {
+    if (along === 'y' && axis.room !== undefined && l.width > axis.room + 0.5) out.push(`${name}: “${l.text}” is ${l.width.toFixed(1)} px wide, room ${axis.room}`);
+    if (l.text.length > 10) out.push(`${name}: “${l.text}” is long`);
+  }
+  if (labels.length < 2) out.push(`${name}: ${labels.length} labels`);
+  return out;
+}
+
+function plotProblems(plots) {
+  return plots.flatMap((p, i) => p.axes.flatMap((a, j) => [...axisProblems(`${p.kind} ${i}.${j} x`, a.x, 'x'), ...axisProblems(`${p.kind} ${i}.${j} y`, a.y, 'y')]));
+}
+
+/** Edits a cell that rebuilds the simulator `selector`: the one there now is marked, so that only its successor is awaited. */
+async function editRebuilding(page, id, source, selector) {
+  await page.evaluate((s) => document.querySelector(s)?.setAttribute('data-stale', ''), selector);
+  await typeIntoCell(page, id, source);
+}
+
+/** Scrolls the simulator `selector` into view once it is rebuilt and ready (an edited cell replaces it). */
+async function showSimulator(page, selector) {
+  for (let attempt = 0; ; attempt++) {
+    await page.waitForSelector(`${selector}[data-ready]:not([data-stale])`, { timeout: 30_000 });
+    try {
+      await page.locator(`${selector}:not([data-stale])`).scrollIntoViewIfNeeded({ timeout: 5000 });
+      return;
+    } catch (error) {
+      if (attempt > 4) throw error;
+      await page.waitForTimeout(300);
+    }
+  }
+}
+
+/** Waits until `predicate(axes of the plot)` holds, polling; returns the last axes. */
+async function waitForAxes(page, selector, predicate, timeout = 20_000) {
+  const deadline = Date.now() + timeout;
+  let last;
+  while (Date.now() < deadline) {
+    last = await page.locator(selector).evaluate((el) => JSON.parse(JSON.stringify(el.axes)));
+    if (predicate(last)) return last;
+    await page.waitForTimeout(200);
+  }
+  throw new Error(`axes of ${selector} never matched; last ${JSON.stringify(last).slice(0, 600)}`);
+}
+
+test('introduction at dt = 0.5: the blown-up phase portrait and time plot have labels that neither touch nor get cut', async () => {
+  for (const width of [1100, 390]) {
+    const { page, problems } = await openChapter(site, '/introduction/');
+    await page.setViewportSize({ width, height: 900 });
+    const sim = '[data-cell="sim"] [data-widget="simulator"]';
+    await editRebuilding(page, 'dt', 'dt = 0.5', sim);
+    await showSimulator(page, sim);
+    // q and p grow past 1e12 within a few seconds at this step
+    await waitForAxes(page, `${sim} [data-widget="phase-portrait"]`, ([a]) => Math.max(...a.x.domain.map(Math.abs)) > 1e9);
+    const plots = await plotAxes(page, sim);
+    assert.deepEqual(plotProblems(plots), [], `at ${width} px`);
+    for (const p of plots) for (const a of p.axes) for (const l of [...a.x.labels, ...a.y.labels]) assert.doesNotMatch(l.text, /\d,\d{3},/);
+    assert.deepEqual(problems, []);
+    await page.close();
+  }
+});
+
+/**
+ * The nonlinear oscillator's other turning point q₋ < 0, where
+ * V(q) = 50q² − 2q³ − 3q⁴ equals the energy V(1) = 45 it starts with
+ * (energy conservation; H of the chapter with ω0 = 10, α = −2, β = −3).
+ */
+function turningPoint() {
+  const V = (q) => 50 * q * q - 2 * q ** 3 - 3 * q ** 4 - 45;
+  let [a, b] = [-1.5, 0];
+  for (let i = 0; i < 100; i++) {
+    const m = (a + b) / 2;
+    if (V(m) > 0) a = m;
+    else b = m;
+  }
+  return (a + b) / 2;
+}
+
+test('nonlinear oscillator: the time plot hugs q between its turning points once it has settled', async () => {
+  const { page, problems } = await openChapter(site, '/nonlinear-oscillator/');
+  const plot = '[data-cell="oscillator"] [data-widget="time-plot"]';
+  await page.locator(plot).scrollIntoViewIfNeeded();
+  const low = turningPoint();
+  const span = 1 - low;
+  // a window of 2 time units without growth, then the range fits what is in view
+  const [axes] = await waitForAxes(page, plot, ([a]) => a.x.domain[1] > 3 && a.y.domain[1] - a.y.domain[0] < 1.25 * span);
+  const [y0, y1] = axes.y.domain;
+  assert.ok(y0 <= low + 1e-3 && y1 >= 1 - 1e-3, `[${y0}, ${y1}] holds [${low}, 1]`);
+  assert.ok(span >= 0.8 * (y1 - y0), `[${y0}, ${y1}] wastes more than a fifth on q in [${low.toFixed(3)}, 1]`);
+  assert.deepEqual(plotProblems([{ kind: 'time-plot', axes: [axes] }]), []);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('kepler with k = 200: the distance r of stars flying apart is plotted from 0 up, never below', async () => {
+  const { page, problems } = await openChapter(site, '/kepler/');
+  await editRebuilding(page, 'k', 'k = 200', '[data-cell="stars"] [data-widget="simulator"]');
+  const plot = '[data-cell="stars"] [data-widget="time-plot"]';
+  await showSimulator(page, '[data-cell="stars"] [data-widget="simulator"]');
+  // unbound: r grows without end, and the range with it
+  const [axes] = await waitForAxes(page, plot, ([a]) => a.y.domain[1] > 40 && a.x.domain[1] > 4);
+  const r = await page.locator('[data-cell="stars"] [data-widget="simulator"]').evaluate((el) => {
+    const rec = el.simulator.simulation.record;
+    const c = rec.columnIndex('r');
+    let min = Infinity;
+    for (let i = 0; i < rec.length; i++) min = Math.min(min, rec.get(i, c));
+    return min;
+  });
+  assert.ok(r > 0);
+  assert.equal(axes.y.domain[0], 0, `r ≥ ${r} drawn on [${axes.y.domain}]`);
+  for (const l of axes.y.labels) assert.doesNotMatch(l.text, /^−/);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('log y labels every decade of a growing motion (introduction, f = 0, γ = 21.3)', async () => {
+  const { page, problems } = await openChapter(site, '/introduction/');
+  // the chapter's first "Try it": no drive, γ in the unstable band
+  await editRebuilding(page, 'params', 'params = ({u: 0.3, gamma: 21.3, beta: 0.2, kappa: 8, omega: 10, f: 0})', '[data-cell="sim"] [data-widget="simulator"]');
+  const plot = '[data-cell="sim"] [data-widget="time-plot"]';
+  await showSimulator(page, '[data-cell="sim"] [data-widget="simulator"]');
+  await page.locator(`${plot} button`, { hasText: 'log y' }).click();
+  const [axes] = await waitForAxes(page, plot, ([a]) => a.y.kind === 'symlog' && Math.max(...a.y.domain.map(Math.abs)) >= 1e3, 40_000);
+  const labels = axes.y.labels.map((l) => l.text);
+  const top = Math.floor(Math.log10(Math.max(...axes.y.domain.map(Math.abs))) + 1e-9);
+  const power = (k) => (k < 4 ? String(10 ** k) : `10${String(k).replace(/\d/g, (d) => '⁰¹²³⁴⁵⁶⁷⁸⁹'[d])}`);
+  // every decade from 10 up on each side the range reaches (1 may give way to 0, a line of text away on a short plot)
+  for (let k = 1; k <= top; k++) {
+    if (axes.y.domain[1] >= 10 ** k) assert.ok(labels.includes(power(k)), `${power(k)} missing from ${labels}`);
+    if (axes.y.domain[0] <= -(10 ** k)) assert.ok(labels.includes(`−${power(k)}`), `−${power(k)} missing from ${labels}`);
+  }
+  assert.ok(labels.includes('0'));
+  assert.deepEqual(plotProblems([{ kind: 'time-plot', axes: [axes] }]), []);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('the batch readout says the drift, then which trajectory: the count never runs into the number', async () => {
+  const { page, problems } = await openChapter(site, '/introduction/');
+  const sim = page.locator('[data-cell="batch"] [data-widget="simulator"]');
+  await sim.scrollIntoViewIfNeeded();
+  await page.waitForTimeout(500);
+  const item = await sim.evaluate((el) => {
+    const value = [...el.querySelectorAll('.pb-readout')].find((r) => r.textContent.includes('ΔH'));
+    return [...value.children].map((c) => c.textContent);
+  });
+  assert.equal(item[0], '|ΔH/H₀|');
+  assert.match(item[1], /^(0|\d\.\d × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)$/);
+  assert.equal(item[2], '(worst of 9 trajectories)');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+const AXE = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+
+test('every plot has a text alternative with its ranges and current values, rewritten a few times a second, not each frame', async () => {
+  const { page, problems } = await openChapter(site, '/introduction/');
+  const sim = '[data-cell="sim"] [data-widget="simulator"]';
+  await page.locator(sim).scrollIntoViewIfNeeded();
+  await page.waitForTimeout(1500);
+  const texts = () =>
+    page.locator(sim).evaluate((root) => {
+      const time = root.querySelector('[data-widget="time-plot"] .pb-stage');
+      return {
+        time: document.getElementById(time.getAttribute('aria-describedby'))?.textContent ?? '',
+        phase: root.querySelector('[data-widget="phase-portrait"] canvas').getAttribute('aria-label'),
+        spectrum: root.querySelector('[data-widget="spectrum"] canvas').getAttribute('aria-label'),
+      };
+    });
+  const first = await texts();
+  assert.match(first.time, /^q, p against t, t from [−\d.]+ to [\d.]+; y from [−\d.]+ to [\d.]+, linear scale\. At t = [\d.]+: q = [−\d.]+, p = [−\d.]+\.$/);
+  assert.match(first.phase, /^Phase portrait: momentum against coordinate, t = [\d.]+: p against q; q from [−\d.]+ to [\d.]+, p from [−\d.]+ to [\d.]+; now q = [−\d.]+, p = [−\d.]+$/);
+  assert.match(first.spectrum, /strongest peak at f = [\d.]+; dashed line: drive κ\/2π at f = [\d.]+/);
+  // sampled every animation frame for two seconds: it moves, but at most a few times a second
+  const changes = await page.locator(sim).evaluate(
+    (root) =>
+      new Promise((done) => {
+        const read = () => root.querySelector('[data-widget="phase-portrait"] canvas').getAttribute('aria-label');
+        let last = read();
+        let changes = 0;
+        let frames = 0;
+        const start = performance.now();
+        const tick = () => {
+          frames++;
+          const now = read();
+          if (now !== last) changes++;
+          last = now;
+          if (performance.now() - start < 2000) requestAnimationFrame(tick);
+          else done({ changes, frames });
+        };
+        requestAnimationFrame(tick);
+      }),
+  );
+  assert.ok(changes.changes >= 2 && changes.changes <= 6, JSON.stringify(changes));
+  assert.ok(changes.frames > 3 * changes.changes, JSON.stringify(changes));
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('every plot has a Table toggle, operable by keyboard, showing its data as an HTML table a screen reader can walk', async () => {
+  const { page, problems } = await openChapter(site, '/introduction/');
+  const sim = page.locator('[data-cell="sim"] [data-widget="simulator"]');
+  await sim.scrollIntoViewIfNeeded();
+  await page.waitForTimeout(3000);
+  for (const kind of ['time-plot', 'phase-portrait', 'spectrum']) {
+    const plot = sim.locator(`[data-widget="${kind}"]`);
+    const button = plot.locator('button.pb-table-toggle');
+    assert.equal(await button.getAttribute('aria-expanded'), 'false');
+    await button.focus();
+    await page.keyboard.press('Enter');
+    assert.equal(await button.getAttribute('aria-expanded'), 'true');
+    const region = plot.locator(`#${await button.getAttribute('aria-controls')}`);
+    assert.equal(await region.isVisible(), true);
+    const table = await region.evaluate((r) => ({
+      caption: r.querySelector('caption')?.textContent ?? '',
+      head: [...r.querySelectorAll('thead th')].map((th) => [th.textContent, th.scope]),
+      rows: [...r.querySelectorAll('tbody tr')].map((tr) => [...tr.children].map((c) => c.textContent)),
+      rowHeads: [...r.querySelectorAll('tbody th')].map((th) => th.scope),
+    }));
+    assert.ok(table.caption.length > 10, table.caption);
+    for (const [, scope] of table.head) assert.equal(scope, 'col');
+    for (const scope of table.rowHeads) assert.equal(scope, 'row');
+    assert.ok(table.rows.length >= 2 && table.rows.length <= 12, `${kind}: ${table.rows.length} rows`);
+    if (kind === 'spectrum') {
+      assert.deepEqual(table.head.map(([h]) => h), ['peak', 'f (cycles per time unit)', 'ω = 2πf', 'amplitude']);
+      assert.ok(table.rows.some((r) => r[0] === 'dashed line: drive κ/2π'));
+      // the strongest peak in the table is the one the plot reports
+      const peak = await plot.evaluate((el) => el.peaks[0].frequency);
+      assert.ok(Math.abs(Number(table.rows[0][1]) - peak) < 1e-3 * peak, `${table.rows[0][1]} vs ${peak}`);
+    } else {
+      assert.deepEqual(table.head.map(([h]) => h).slice(0, 3), ['t', 'q', 'p']);
+      // each row is the record's sample at that time
+      const ok = await sim.evaluate((el, rows) => {
+        const rec = el.simulator.simulation.record;
+        return rows.every(([t, q]) => {
+          const [, end] = rec.range(-Infinity, Number(t.replace('−', '-')) + 1e-3);
+          const row = end - 1;
+          return Math.abs(rec.get(row, 1) - Number(q.replace('−', '-'))) <= 1e-3 * Math.max(1, Math.abs(rec.get(row, 1))) * 10;
+        });
+      }, table.rows);
+      assert.ok(ok, JSON.stringify(table.rows.slice(0, 3)));
+    }
+    // axe on the open table and its toggle
+    await page.evaluate(AXE);
+    const violations = await region.evaluate(async (r) => (await window.axe.run(r.closest('[data-widget]'), { resultTypes: ['violations'] })).violations.map((v) => v.id));
+    assert.deepEqual(violations, [], kind);
+    await page.keyboard.press('Enter');
+    assert.equal(await button.getAttribute('aria-expanded'), 'false');
+    assert.equal(await region.isVisible(), false);
+  }
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+/** Chapters with simulators. */
+const CHAPTERS = ['/introduction/', '/kepler/', '/nonlinear-oscillator/', '/parametric-resonance/', '/scattering/', '/adiabatic-invariants/', '/special-relativity/', '/for-teachers/', '/playground/'];
+
+test('at 360 px every simulator on every chapter fits the width, and its axes read: no touching labels, text ≥ 11 px', async (t) => {
+  const page = await site.context.newPage();
+  await page.setViewportSize({ width: 360, height: 800 });
+  const report = [];
+  let count = 0;
+  for (const path of CHAPTERS) {
+    await page.goto(`${site.origin}${path}`);
+    await cellsReady(page);
+    const sims = await page.locator('[data-widget="simulator"]').count();
+    for (let i = 0; i < sims; i++) {
+      const sim = page.locator('[data-widget="simulator"]').nth(i);
+      await sim.scrollIntoViewIfNeeded();
+      await page.waitForTimeout(700);
+      // the widget's box, and anything inside it that shows beyond the viewport (not clipped by a box that scrolls or hides it)
+      const outside = await sim.evaluate((root) => {
+        const width = document.documentElement.clientWidth;
+        const r = root.getBoundingClientRect();
+        const out = r.left < 0 || r.right > width ? [`the simulator spans ${r.left} … ${r.right}`] : [];
+        for (const el of root.querySelectorAll('*')) {
+          const b = el.getBoundingClientRect();
+          if (!el.getClientRects().length || (b.right <= width + 0.5 && b.left >= -0.5)) continue;
+          let clipped = false;
+          for (let a = el.parentElement; a && a !== root.parentElement && !clipped; a = a.parentElement) {
+            const box = a.getBoundingClientRect();
+            clipped = getComputedStyle(a).overflowX !== 'visible' && box.right <= width + 0.5 && box.left >= -0.5;
+          }
+          if (!clipped) out.push(`${el.tagName.toLowerCase()}.${el.className} spans ${Math.round(b.left)} … ${Math.round(b.right)}`);
+        }
+        return out;
+      });
+      report.push(...outside.map((o) => `${path} simulator ${i}: ${o}`));
+      count++;
+    }
+    report.push(...plotProblems(await plotAxes(page, 'body')).map((p) => `${path} ${p}`));
+  }
+  t.diagnostic(`${count} simulators checked`);
+  assert.ok(count >= 10);
+  assert.deepEqual(report, []);
+  await page.close();
+});
