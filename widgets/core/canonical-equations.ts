@@ -1,6 +1,8 @@
 import type { BuildControl } from './build-control.ts';
 import { isCompiledModel, modelKey, type CompiledModel, type CompiledModelStore, type ModelKeySpec } from './compiled-model.ts';
 import { InputError } from './errors.ts';
+import { applyMethod } from './integrators/apply.ts';
+import { DEFAULT_METHOD, type MethodChoice } from './integrators/methods.ts';
 import { stateNames } from './expression/names.ts';
 import { modelFromCompiled } from './model-from-compiled.ts';
 import { gradientField, type OpaqueHamiltonian } from './js-function/stencil.ts';
@@ -27,6 +29,8 @@ export interface HamiltonianSpec {
   momenta?: readonly string[];
   /** 'stencil' forces finite differences for a JS function, to compare routes */
   differentiation?: 'auto' | 'stencil';
+  /** the integration method, RK 3/8 by default (integrators/methods.ts) */
+  method?: MethodChoice;
 }
 
 export interface BuildOptions extends BuildControl {
@@ -58,7 +62,9 @@ export async function canonicalEquations(spec: HamiltonianSpec, options: BuildOp
     return fieldModel(spec, names, 'gradient', gradientField(spec.gradient, 2 * spec.dof), String(spec.gradient));
   }
   const hamiltonian = spec.hamiltonian!;
-  return modelFromCompiled(await compiledModelFor({ ...spec, hamiltonian }, options), spec.params, hamiltonian);
+  const method = spec.method ?? DEFAULT_METHOD;
+  const compiled = await compiledModelFor({ ...spec, hamiltonian, method }, options);
+  return modelFromCompiled(compiled, spec.params, hamiltonian, method);
 }
 
 /**
@@ -80,7 +86,7 @@ function fieldModel(spec: HamiltonianSpec, names: string[], route: Route, field:
   const dim = 2 * spec.dof;
   const params = spec.params ?? {};
   const h = spec.hamiltonian;
-  return withSummary({
+  const model = withSummary({
     dof: spec.dof,
     dim,
     names,
@@ -93,6 +99,7 @@ function fieldModel(spec: HamiltonianSpec, names: string[], route: Route, field:
     field,
     hamiltonian: typeof h === 'function' ? opaqueAsHamiltonian(h, dim) : undefined,
   });
+  return applyMethod(model, spec.method ?? DEFAULT_METHOD);
 }
 
 function opaqueAsHamiltonian(h: OpaqueHamiltonian, dim: number): HamiltonianFunction {

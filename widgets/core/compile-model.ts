@@ -4,7 +4,7 @@
  * on first use.
  */
 import { throwIfAborted, type BuildControl } from './build-control.ts';
-import { COMPILED_FORMAT, hamiltonianSource, modelKey, type CompiledModel, type ModelKeySpec } from './compiled-model.ts';
+import { codeMethodOf, COMPILED_FORMAT, hamiltonianSource, modelKey, type CompiledModel, type ModelKeySpec } from './compiled-model.ts';
 import { InputError } from './errors.ts';
 import { compileExpression } from './expression/compile.ts';
 import { stateNames } from './expression/names.ts';
@@ -29,11 +29,14 @@ export async function compileModel(spec: ModelKeySpec, control: BuildControl = {
   const paramNames = Object.keys(spec.params ?? {});
   const { names } = stateNames(spec.dof, spec.coordinates, spec.momenta);
   const common = { format: COMPILED_FORMAT, key, dof: spec.dof, names, paramNames, source } as const;
-  const expression = { dof: spec.dof, paramNames, coordinates: spec.coordinates, momenta: spec.momenta };
+  // Only the methods with code of their own change what is compiled (integrators/methods.ts).
+  const method = codeMethodOf(spec);
+  const expression = { dof: spec.dof, paramNames, coordinates: spec.coordinates, momenta: spec.momenta, method };
+  const withMethod = method ? { method } : {};
 
   if (typeof spec.hamiltonian === 'string' && !isFunctionSource(spec.hamiltonian)) {
     const { code, latex } = await compileExpression({ ...expression, source }, control);
-    return { ...common, route: 'expression', code, latex };
+    return { ...common, ...withMethod, route: 'expression', code, latex };
   }
   const program = await parseFunction(source);
   if (spec.differentiation !== 'stencil') {
@@ -41,7 +44,7 @@ export async function compileModel(spec: ModelKeySpec, control: BuildControl = {
     if ('expression' in translated) {
       try {
         const { code, latex } = await compileExpression({ ...expression, source: translated.expression }, control);
-        return { ...common, route: 'js-translated', code, latex };
+        return { ...common, ...withMethod, route: 'js-translated', code, latex };
       } catch (error) {
         // A function mathjs cannot differentiate: finite differences still work.
         if (!(error instanceof InputError) || !/differentiate/.test(error.message)) throw error;
@@ -50,5 +53,5 @@ export async function compileModel(spec: ModelKeySpec, control: BuildControl = {
   }
   // Built once here so that source which is no function fails now, with its reason.
   if (typeof spec.hamiltonian === 'string') functionFromSource(source, paramNames, new Float64Array(paramNames.length));
-  return { ...common, route: 'js-stencil' };
+  return { ...common, ...withMethod, route: 'js-stencil' };
 }

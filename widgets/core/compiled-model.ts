@@ -17,6 +17,7 @@
  * and of the parameters, and the route asked for. Parameter VALUES are not
  * part of it: the generated code reads them live from an array.
  */
+import { CODE_METHODS, type MethodChoice, type MethodName } from './integrators/methods.ts';
 import type { OpaqueHamiltonian } from './js-function/stencil.ts';
 
 /**
@@ -39,6 +40,12 @@ export interface CompiledModel {
   readonly paramNames: readonly string[];
   /** H as given, for export metadata (and, for a stencil model, to rebuild the function). */
   readonly source: string;
+  /**
+   * The method the code was generated for, when it is one that needs code
+   * of its own (integrators/methods.ts, CODE_METHODS); absent for RK 3/8,
+   * whose code every other method's model carries too.
+   */
+  readonly method?: 'verlet' | 'yoshida4' | 'midpoint';
   /** Generated code (absent for a stencil model): each is the body of a function returning a factory. */
   readonly code?: {
     /** `return function advance(x, count, P, t0, k0, dt, steps) {…}` */
@@ -47,6 +54,8 @@ export interface CompiledModel {
     readonly field: string;
     /** `return function (P) { return function (t, x, o) {…} }` */
     readonly hamiltonian: string;
+    /** for the midpoint rule: `return function (P) { return function (t, x, J) {…} }`, ∂f/∂x row-major */
+    readonly jacobian?: string;
   };
   /** LaTeX of H and of Hamilton's equations, for a symbolic H. */
   readonly latex?: { readonly hamiltonian: string; readonly equations: readonly string[] };
@@ -60,6 +69,14 @@ export interface ModelKeySpec {
   coordinates?: readonly string[];
   momenta?: readonly string[];
   differentiation?: 'auto' | 'stencil';
+  /** the integration method; only those that need code of their own change the key */
+  method?: MethodName | MethodChoice;
+}
+
+/** The method of a spec that needs code of its own, if it has one. */
+export function codeMethodOf(spec: ModelKeySpec): 'verlet' | 'yoshida4' | 'midpoint' | undefined {
+  const name = typeof spec.method === 'string' ? spec.method : spec.method?.name;
+  return name !== undefined && CODE_METHODS.has(name) ? (name as 'verlet' | 'yoshida4' | 'midpoint') : undefined;
 }
 
 /** The text of H: an expression or function source as is, a function by its source. */
@@ -73,7 +90,7 @@ export function hamiltonianSource(hamiltonian: string | OpaqueHamiltonian): stri
  * parameter values.
  */
 export function modelKey(spec: ModelKeySpec): string {
-  return JSON.stringify([
+  const key: unknown[] = [
     COMPILED_FORMAT,
     spec.dof,
     hamiltonianSource(spec.hamiltonian),
@@ -81,7 +98,11 @@ export function modelKey(spec: ModelKeySpec): string {
     spec.coordinates ?? null,
     spec.momenta ?? null,
     spec.differentiation ?? 'auto',
-  ]);
+  ];
+  // RK 3/8's key is as it always was, so models compiled before methods existed stay valid.
+  const method = codeMethodOf(spec);
+  if (method) key.push(method);
+  return JSON.stringify(key);
 }
 
 const ROUTES: readonly string[] = ['expression', 'js-translated', 'js-stencil'];
@@ -98,8 +119,10 @@ export function isCompiledModel(value: unknown, key: string): value is CompiledM
   if (c.format !== COMPILED_FORMAT || c.key !== key || typeof c.route !== 'string' || !ROUTES.includes(c.route)) return false;
   if (!Number.isInteger(c.dof) || !isStrings(c.names) || c.names.length !== 2 * (c.dof as number)) return false;
   if (!isStrings(c.paramNames) || typeof c.source !== 'string') return false;
+  if (c.method !== undefined && !(typeof c.method === 'string' && CODE_METHODS.has(c.method as MethodName))) return false;
   if (c.route === 'js-stencil') return true;
   const code = c.code as Record<string, unknown> | undefined;
+  if (c.method === 'midpoint' && typeof code?.jacobian !== 'string') return false;
   return typeof code?.stepper === 'string' && typeof code.field === 'string' && typeof code.hamiltonian === 'string';
 }
 

@@ -1,14 +1,26 @@
+import type { MethodChoice } from './integrators/methods.ts';
 import type { ExportMeta } from './json.ts';
 import type { Simulation } from './simulation.ts';
 import { VERSION } from './version.ts';
 
-/** The integration method of every simulation: the classical Runge–Kutta 3/8 rule. */
+/** The default integration method: the classical Runge–Kutta 3/8 rule, as in the paper. */
 export const METHOD = 'rk38';
+
+/**
+ * The method keys of a meta: `method`, and for the adaptive method its
+ * tolerances `rtol` and `atol`, which decide its numbers as dt does a fixed
+ * step's.
+ */
+export function methodMeta(method: MethodChoice | undefined): Pick<ExportMeta, 'method' | 'rtol' | 'atol'> {
+  if (!method) return { method: METHOD };
+  if (method.name !== 'adaptive') return { method: method.name };
+  return { method: method.name, rtol: method.rtol, atol: method.atol };
+}
 
 /**
  * The metadata of an export of a simulation's record, with the keys and key
  * order of `phasebook simulate` (widgets/cli/simulate.ts): the source of H,
- * parameters, dof, dt, method, sampling interval, t0, the initial state, the
+ * parameters, dof, dt, method (with rtol and atol for the adaptive one), sampling interval, t0, the initial state, the
  * route the canonical equations took, the state and derived names and the
  * version; then, only when they apply, the batch size (`count`) and the rows
  * the record had dropped (`dropped`).
@@ -22,7 +34,7 @@ export function exportMeta(simulation: Simulation): ExportMeta {
     params,
     dof: model.dof,
     dt: simulation.dt,
-    method: METHOD,
+    ...methodMeta(model.method),
     every: simulation.every,
     t0: simulation.t0,
     initial: Array.from(simulation.initial),

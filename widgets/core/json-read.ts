@@ -61,6 +61,7 @@ const REQUIRED: ReadonlyArray<[string, Kind]> = [
 ];
 const OPTIONAL: ReadonlyArray<[string, Kind]> = [
   ['route', 'string'], ['names', 'string[]'], ['derived', 'string[]'], ['count', 'number'], ['dropped', 'number'],
+  ['rtol', 'number'], ['atol', 'number'],
 ];
 
 function isKind(v: JsonValue, kind: Kind): boolean {

@@ -25,6 +25,9 @@ export interface ExportMeta {
   dof: number;
   dt: number;
   method: string;
+  /** the adaptive method's tolerances */
+  rtol?: number;
+  atol?: number;
   /** Steps between samples. */
   every: number;
   t0: number;

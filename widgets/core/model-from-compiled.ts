@@ -4,6 +4,9 @@
  */
 import type { CompiledModel, CompiledRoute } from './compiled-model.ts';
 import { InputError } from './errors.ts';
+import { applyMethod } from './integrators/apply.ts';
+import { DEFAULT_METHOD, type MethodChoice } from './integrators/methods.ts';
+import type { JacobianFunction } from './integrators/midpoint.ts';
 import { functionFromSource } from './js-function/compile.ts';
 import { stencilField, type OpaqueHamiltonian } from './js-function/stencil.ts';
 import { rk38 } from './rk38.ts';
@@ -34,11 +37,14 @@ function parameterValues(compiled: CompiledModel, params: Readonly<Record<string
  * A running model from compiled data: `params` gives the parameter values,
  * and `hamiltonian`, for a stencil model, the function itself when H was
  * given as one (its source alone would lose what it closes over).
+ * `method` is the integration method, by default the one the code was
+ * compiled for (RK 3/8 unless compiled.method says otherwise).
  */
 export function modelFromCompiled(
   compiled: CompiledModel,
   params: Readonly<Record<string, number>> = {},
   hamiltonian?: string | OpaqueHamiltonian,
+  method: MethodChoice = compiled.method ? { name: compiled.method } : DEFAULT_METHOD,
 ): Model {
   const values = parameterValues(compiled, params);
   const common = {
@@ -53,17 +59,35 @@ export function modelFromCompiled(
   };
   if (compiled.route === 'js-stencil') {
     const opaque = typeof hamiltonian === 'function' ? hamiltonian : undefined;
-    return withSummary({ ...common, ...stencilParts(compiled, values, opaque) });
+    return applyMethod(withSummary({ ...common, ...stencilParts(compiled, values, opaque) }), method);
   }
   const code = compiled.code!;
+  // code.stepper is RK 3/8's unless the code was generated for a splitting, whose stepper it then is.
+  const split = compiled.method === 'verlet' || compiled.method === 'yoshida4';
+  const needsOwnCode = method.name === 'verlet' || method.name === 'yoshida4' || method.name === 'midpoint';
+  if ((needsOwnCode && compiled.method !== method.name) || (method.name === 'rk38' && split)) {
+    throw new Error(`the model was compiled for ${compiled.method ?? 'rk38'}, not for ${method.name}`);
+  }
   const advance = new Function(code.stepper)() as Stepper['advance'];
-  return withSummary({
+  const rk38Model = withSummary({
     ...common,
     stepper: { dim: common.dim, advance },
     field: new Function(code.field)()(values) as VectorField,
     hamiltonian: new Function(code.hamiltonian)()(values) as HamiltonianFunction,
     latex: compiled.latex,
   });
+  const jacobian = code.jacobian ? exactJacobian(code.jacobian, values, common.dim) : undefined;
+  return applyMethod(rk38Model, method, { split: split ? advance : undefined, jacobian });
+}
+
+/** The generated Jacobian, written into a zeroed matrix of its own and copied out (its zero entries are never written). */
+function exactJacobian(source: string, values: Float64Array, dim: number): JacobianFunction {
+  const evaluate = new Function(source)()(values) as JacobianFunction;
+  const own = new Float64Array(dim * dim);
+  return (t, x, out) => {
+    evaluate(t, x, own);
+    out.set(own);
+  };
 }
 
 /**

@@ -5,6 +5,8 @@
  * Float64Array.
  */
 
+import type { MethodChoice } from './integrators/methods.ts';
+
 /** Writes dx/dt at (t, x) into `dxdt`; both have length 2·dof. */
 export type VectorField = (t: number, x: Float64Array, dxdt: Float64Array) => void;
 
@@ -12,7 +14,9 @@ export type VectorField = (t: number, x: Float64Array, dxdt: Float64Array) => vo
 export type HamiltonianFunction = (t: number, x: Float64Array, offset?: number) => number;
 
 /**
- * Advances trajectories by whole RK 3/8 steps. Step k of a run starts at
+ * Advances trajectories by whole steps of the model's method (RK 3/8 unless
+ * the model says otherwise; for the adaptive method a "step" is one
+ * interval between samples, integrated in steps of its own choosing). Step k of a run starts at
  * t = t0 + k·dt, computed rather than accumulated so that long runs carry no
  * summed rounding in t.
  */
@@ -61,6 +65,8 @@ export interface Model {
   /** The source of H as given (expression or function text), for export metadata. */
   readonly source: string;
   readonly stepper: Stepper;
+  /** The integration method of `stepper`, when it is not RK 3/8 (integrators/methods.ts). */
+  readonly method?: MethodChoice;
   /** H itself, when known (not for a bare vector field). */
   readonly hamiltonian?: HamiltonianFunction;
   /** dx/dt at one state, for readouts and tests. */

@@ -5,6 +5,9 @@ import { LOGICAL_OPERATORS, SUPPORTED_FUNCTIONS } from './emit.ts';
 
 const ARITHMETIC = new Set(['add', 'subtract', 'multiply', 'divide', 'unaryMinus', 'unaryPlus', 'pow']);
 import { evaluatorSource, fusedStepperSource, type RateExpressions } from './fused-stepper.ts';
+import { jacobianEntries, jacobianSource } from './jacobian.ts';
+import { requireSeparable } from './separable.ts';
+import { splitStepperSource } from './split-stepper.ts';
 import { CONSTANTS, checkName, stateNames } from './names.ts';
 import { latexOf } from './latex.ts';
 import { loadMathjs, type MathJs } from './mathjs.ts';
@@ -18,12 +21,18 @@ export interface ExpressionSpec {
   paramNames?: readonly string[];
   coordinates?: readonly string[];
   momenta?: readonly string[];
+  /**
+   * A method that needs code of its own (integrators/methods.ts): the
+   * splittings get their fused stepper in place of RK 3/8's, after H is
+   * checked to separate; the midpoint rule gets the Jacobian as well.
+   */
+  method?: 'verlet' | 'yoshida4' | 'midpoint';
 }
 
 /** The generated code and LaTeX of an expression H (see CompiledModel). */
 export interface CompiledExpression {
   names: string[];
-  code: { stepper: string; field: string; hamiltonian: string };
+  code: { stepper: string; field: string; hamiltonian: string; jacobian?: string };
   latex: { hamiltonian: string; equations: string[] };
 }
 
@@ -56,11 +65,38 @@ export async function compileExpression(spec: ExpressionSpec, control: BuildCont
   throwIfAborted(control.signal);
   const math = await loadMathjs();
   const parsed = parseHamiltonian(math, spec);
-  const tracker = new BuildTracker(control, parsed.names.length + 1);
+  const extra = spec.method === 'midpoint' ? parsed.names.length : 0;
+  const tracker = new BuildTracker(control, parsed.names.length + 1 + extra);
   const equations = await hamiltonEquations(math, parsed, tracker);
-  const compiled = generateCode(parsed, equations);
+  const compiled = spec.method ? await methodCode(math, parsed, equations, spec.method, tracker) : generateCode(parsed, equations);
   await tracker.step();
   return compiled;
+}
+
+/**
+ * The code of H for a method other than RK 3/8: a splitting's fused stepper
+ * (for an H that separates, else an InputError saying why not), or RK 3/8's
+ * code plus the Jacobian of the field for the midpoint rule.
+ */
+export async function methodCode(
+  math: MathJs,
+  parsed: ParsedHamiltonian,
+  equations: HamiltonEquations,
+  method: NonNullable<ExpressionSpec['method']>,
+  tracker?: BuildTracker,
+): Promise<CompiledExpression> {
+  const compiled = generateCode(parsed, equations);
+  const { names, paramNames, dof } = parsed;
+  const model: RateExpressions = { names, paramNames, rates: equations.rates };
+  if (method === 'midpoint') {
+    const entries = jacobianEntries(math, model);
+    for (let i = 0; i < names.length; i++) await tracker?.step();
+    return { ...compiled, code: { ...compiled.code, jacobian: jacobianSource(model, entries) } };
+  }
+  // ∂H/∂q_i is the rate of p_i, ∂H/∂p_i that of q_i.
+  const derivatives = names.map((_, i) => equations.rates[i < dof ? i + dof : i - dof].node);
+  requireSeparable(method, names, derivatives);
+  return { ...compiled, code: { ...compiled.code, stepper: splitStepperSource(model, method) } };
 }
 
 /** Parses H, resolves aliases and rejects what the compiler cannot handle. */
