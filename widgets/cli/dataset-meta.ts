@@ -8,7 +8,8 @@
  * the machine, the time or the number of workers: the same run writes the
  * same meta.
  */
-import { METHOD } from '../core/export-meta.ts';
+import { methodMeta } from '../core/export-meta.ts';
+import { methodChoice } from '../core/integrators/methods.ts';
 import type { ExportMeta } from '../core/json.ts';
 import type { Model } from '../core/types.ts';
 import { VERSION } from '../core/version.ts';
@@ -53,7 +54,7 @@ export function datasetMeta({ spec, model, steps, samples, columns, total, first
   if (spec.paramExpressions && Object.keys(spec.paramExpressions).length) meta.paramExpressions = spec.paramExpressions;
   meta.dof = model.dof;
   meta.dt = spec.dt;
-  meta.method = METHOD;
+  Object.assign(meta, methodMeta(model.method));
   meta.every = spec.every;
   meta.t0 = spec.t0;
   meta.tEnd = spec.tEnd;
@@ -98,6 +99,8 @@ export function specFromMeta(meta: DatasetMeta): RunSpec {
       ? { kind: 'given', values: meta.initial, ...(meta.initialSet.file !== undefined ? { file: meta.initialSet.file as string } : {}) }
       : (meta.initialSet as unknown as SetSpec);
   const vectorField = typeof meta.vectorField === 'string' ? meta.vectorField : undefined;
+  // A file from before methods were a choice says rk38; an unknown name is an InputError.
+  const method = methodChoice(meta.method ?? 'rk38', meta.rtol, meta.atol);
   return {
     hamiltonian: vectorField !== undefined && meta.hamiltonian === '' ? undefined : meta.hamiltonian,
     vectorField,
@@ -107,6 +110,7 @@ export function specFromMeta(meta: DatasetMeta): RunSpec {
     coordinates: meta.coordinates as string[] | undefined,
     momenta: meta.momenta as string[] | undefined,
     dt: meta.dt,
+    ...(method.name === 'rk38' ? {} : { method }),
     t0: meta.t0,
     tEnd: meta.tEnd,
     every: meta.every,

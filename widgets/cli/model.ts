@@ -13,6 +13,7 @@ import { compiledModelFor } from '../core/canonical-equations.ts';
 import { canonicalEquations } from '../core/canonical-equations.ts';
 import type { CompiledModel } from '../core/compiled-model.ts';
 import { InputError } from '../core/errors.ts';
+import { DEFAULT_METHOD, type MethodChoice } from '../core/integrators/methods.ts';
 import { isFunctionSource } from '../core/js-function/compile.ts';
 import type { OpaqueHamiltonian } from '../core/js-function/stencil.ts';
 import { modelFromCompiled } from '../core/model-from-compiled.ts';
@@ -32,43 +33,45 @@ export interface ModelArguments {
   momenta?: string[];
   /** false for --no-cache */
   cache: boolean;
+  /** --method; RK 3/8 when absent */
+  method?: MethodChoice;
 }
 
 /** What a model is built from, as plain data that can be sent to a worker. */
 export type ModelRecipe =
-  | { kind: 'compiled'; compiled: CompiledModel; params: Record<string, number> }
-  | { kind: 'field'; dof: number; vectorField: string; hamiltonian?: string; params: Record<string, number>; coordinates?: string[]; momenta?: string[] };
+  | { kind: 'compiled'; compiled: CompiledModel; params: Record<string, number>; method?: MethodChoice }
+  | { kind: 'field'; dof: number; vectorField: string; hamiltonian?: string; params: Record<string, number>; coordinates?: string[]; momenta?: string[]; method?: MethodChoice };
 
 const FIELD_SHAPE = '(t, x, dxdt) => { dxdt[0] = …; … }';
 const H_SHAPE = '(t, x) => …';
 
 /** The recipe of the model `args` describe: compiles H (or takes it from the cache) when there is one to compile. */
 export async function modelRecipe(args: ModelArguments): Promise<ModelRecipe> {
-  const { dof, params, coordinates, momenta } = args;
+  const { dof, params, coordinates, momenta, method } = args;
   if (args.vectorField === undefined) {
     if (args.hamiltonian === undefined) throw new InputError('give --hamiltonian H, or --vector-field with a JS function (t, x, dxdt) => { … }');
     const store = args.cache ? diskModelStore(modelCacheDirectory()) : undefined;
-    const compiled = await compiledModelFor({ dof, hamiltonian: args.hamiltonian, params, coordinates, momenta }, { store });
-    return { kind: 'compiled', compiled, params };
+    const compiled = await compiledModelFor({ dof, hamiltonian: args.hamiltonian, params, coordinates, momenta, method }, { store });
+    return { kind: 'compiled', compiled, params, method };
   }
   if (args.hamiltonian !== undefined && !isFunctionSource(args.hamiltonian)) {
     // Beside a vector field, H only fills the H column: a function evaluates it without compiling anything.
     throw new InputError(`with --vector-field, --hamiltonian must be a JS function ${H_SHAPE}, since it only fills the H column`);
   }
-  return { kind: 'field', dof, vectorField: args.vectorField, hamiltonian: args.hamiltonian, params, coordinates, momenta };
+  return { kind: 'field', dof, vectorField: args.vectorField, hamiltonian: args.hamiltonian, params, coordinates, momenta, method };
 }
 
 /** The running model of a recipe; no compiler is loaded. */
 export async function modelFromRecipe(recipe: ModelRecipe): Promise<Model> {
   if (recipe.kind === 'compiled') {
-    const model = modelFromCompiled(recipe.compiled, recipe.params, recipe.compiled.source);
+    const model = modelFromCompiled(recipe.compiled, recipe.params, recipe.compiled.source, recipe.method ?? DEFAULT_METHOD);
     return recipe.compiled.route === 'js-stencil' ? userCodeModel(model, 'H') : model;
   }
   const { params } = recipe;
   const vectorField = functionFromArgument(recipe.vectorField, '--vector-field', FIELD_SHAPE, params) as VectorField;
   const hamiltonian =
     recipe.hamiltonian === undefined ? undefined : (functionFromArgument(recipe.hamiltonian, '--hamiltonian', H_SHAPE, params) as OpaqueHamiltonian);
-  const model = await canonicalEquations({ dof: recipe.dof, vectorField, hamiltonian, params, coordinates: recipe.coordinates, momenta: recipe.momenta });
+  const model = await canonicalEquations({ dof: recipe.dof, vectorField, hamiltonian, params, coordinates: recipe.coordinates, momenta: recipe.momenta, method: recipe.method });
   return userCodeModel(model, 'the vector field');
 }
 

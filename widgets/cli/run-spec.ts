@@ -3,6 +3,7 @@
  * what the command line says, what a file's meta says to reproduce it, and
  * what shards must share to be merged.
  */
+import type { MethodChoice } from '../core/integrators/methods.ts';
 import type { ParquetLayout } from './formats/parquet-dataset.ts';
 
 export type Format = 'csv' | 'json' | 'npz' | 'parquet';
@@ -25,6 +26,8 @@ export interface RunSpec {
   coordinates?: string[];
   momenta?: string[];
   dt: number;
+  /** --method (with --rtol, --atol); RK 3/8 when absent */
+  method?: MethodChoice;
   t0: number;
   tEnd: number;
   every: number;

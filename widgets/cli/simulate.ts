@@ -7,6 +7,7 @@ import { basename, extname } from 'node:path';
 import { InputError } from '../core/errors.ts';
 import { stateNames } from '../core/expression/names.ts';
 import { MAX_SEED } from '../core/dataset/philox.ts';
+import { methodChoice } from '../core/integrators/methods.ts';
 import { DEFAULT_DT } from '../core/simulation.ts';
 import { number, numberList, parseArgs, positive, wholeNumber } from './args.ts';
 import { defaultWorkers, executeRun, prepareRun, type PreparedRun } from './dataset-run.ts';
@@ -20,6 +21,7 @@ import type { Format, RunSpec, SetSpec } from './run-spec.ts';
 
 export const SIMULATE_USAGE = `phasebook simulate --hamiltonian H --dof N --initial v1,…,v2N [--param name=value]…
                    [--dt 5e-4] [--t0 0] [--t-end 10] [--every 1 | --times t1,t2,…] [--derivatives]
+                   [--method rk38|verlet|yoshida4|midpoint|adaptive [--rtol 1e-9] [--atol 1e-12]]
                    [--format csv|json|npz|parquet] [--layout long|wide] [--output FILE]
                    [--coordinates x,y --momenta px,py] [--workers K] [--shard i/n] [--no-cache] [--force]
     many trajectories instead of --initial:
@@ -81,6 +83,9 @@ export function parseSimulate(argv: readonly string[]): SimulateArguments {
     every: 'value',
     times: 'value',
     derivatives: 'flag',
+    method: 'value',
+    rtol: 'value',
+    atol: 'value',
     format: 'value',
     layout: 'value',
     output: 'value',
@@ -115,6 +120,12 @@ export function parseSimulate(argv: readonly string[]): SimulateArguments {
   const tEnd = times ? times[times.length - 1] : number(value('t-end') ?? String(t0 + 10), '--t-end');
   if (tEnd < t0) throw new InputError(value('t0') === undefined ? `--t-end must not be negative, not ${tEnd}` : `--t-end ${tEnd} is before --t0 ${t0}`);
   const every = wholeNumber(value('every') ?? '1', '--every');
+  const tolerance = (name: string) => (value(name) === undefined ? undefined : number(value(name)!, `--${name}`));
+  const methodName = value('method') ?? 'rk38';
+  if (methodName !== 'adaptive' && (value('rtol') !== undefined || value('atol') !== undefined)) {
+    throw new InputError('--rtol and --atol are tolerances of --method adaptive');
+  }
+  const method = methodChoice(methodName, tolerance('rtol'), tolerance('atol'));
 
   const output = value('output');
   const format = formatOf(value('format'), output);
@@ -137,6 +148,7 @@ export function parseSimulate(argv: readonly string[]): SimulateArguments {
     coordinates,
     momenta,
     dt,
+    ...(method.name === 'rk38' ? {} : { method }),
     t0,
     tEnd,
     every,
