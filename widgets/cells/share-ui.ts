@@ -159,9 +159,9 @@ export function showSharedBanner(view: SharedView, chapter: ChapterCells): void 
     list.append(item);
   }
 
-  const state = element('p', 'Their code has not run: each changed cell shows the shared text, marked “not run yet”, while the chapter’s original runs. Read it, then press Run shared edits to run it — code from a link can do anything a cell can do on this page.', 'share-state');
+  const state = element('p', 'The shared code has not run: each changed cell shows the shared text, marked “not run yet”, while the chapter’s original runs. Read it, then press Run shared edits to run it — code from a link can do anything a cell can do on this page.', 'share-state');
   state.dataset.shareState = '';
-  const notes: HTMLElement[] = [];
+  const notes: HTMLElement[] = [element('p', 'Your own saved edits of this chapter, if you have any, are not shown here and are left as they are.', 'share-note')];
   if (plan.changed.length) notes.push(element('p', `Changed in the chapter since the link was made: ${plan.changed.join(', ')}. The shared text is as it was written then.`, 'share-note'));
   if (plan.missing.length) notes.push(element('p', `Left out, as this chapter no longer has these cells: ${plan.missing.join(', ')}.`, 'share-note'));
 
