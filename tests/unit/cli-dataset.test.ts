@@ -373,6 +373,16 @@ describe('workers and shards', () => {
     expect(readFileSync(merged).equals(readFileSync(whole))).toBe(true);
   }, 60_000);
 
+  it('merges the shards of a grid into the unsharded file, each grid point where the whole run puts it', async () => {
+    const grid = [...OSCILLATOR, '--grid', 'q=-1:1:5,p=-0.5:0.5:3', '--t-end', '3', '--every', '300', '--derivatives'];
+    const whole = join(dir, 'whole.npz');
+    expect(await simulate(...grid, '--output', whole)).toBe(0);
+    for (const i of [1, 2, 3]) expect(await simulate(...grid, '--shard', `${i}/3`, '--output', join(dir, `g${i}.npz`))).toBe(0);
+    expect(await main(['merge', '--output', join(dir, 'm.npz'), join(dir, 'g2.npz'), join(dir, 'g3.npz'), join(dir, 'g1.npz')])).toBe(0);
+    expect(readFileSync(join(dir, 'm.npz')).equals(readFileSync(whole))).toBe(true);
+    checkNpz(npzJs(whole), 15, 21, true);
+  }, 60_000);
+
   it('merges wide Parquet shards into the unsharded file', async () => {
     const whole = join(dir, 'whole.parquet');
     expect(await simulate(...SET, '--layout', 'wide', '--output', whole)).toBe(0);
