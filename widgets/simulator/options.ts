@@ -1,5 +1,6 @@
 import { capacityFor } from '../core/capacity.ts';
 import type { HamiltonianSpec } from '../core/canonical-equations.ts';
+import { methodChoice } from '../core/integrators/methods.ts';
 import type { DerivedSeries } from '../core/simulation.ts';
 import type { Model } from '../core/types.ts';
 
@@ -24,7 +25,7 @@ export const BATCH_EVERY = 20;
 const KNOWN = [
   'hamiltonian', 'vectorField', 'gradient', 'model', 'dof', 'initial', 'params', 'dt', 'every', 'speed', 'derived',
   'capacity', 'views', 'timePlot', 'spectrum', 'trajectory', 'phase', 'coordinates', 'momenta', 'autoplay',
-  'invalidation', 'label', 'differentiation',
+  'invalidation', 'label', 'differentiation', 'method', 'rtol', 'atol',
 ];
 
 /** Throws on an option name that is not known, suggesting the closest known one. */
@@ -37,9 +38,14 @@ export function checkOptionNames(options: object): void {
 }
 
 /** What simulator() options say about the model, when they define it rather than pass one. */
-export interface ModelOptions extends Omit<HamiltonianSpec, 'dof'> {
+export interface ModelOptions extends Omit<HamiltonianSpec, 'dof' | 'method'> {
   dof?: number;
   initial?: unknown;
+  /** rk38 (default), verlet, yoshida4, midpoint or adaptive (core/integrators/methods.ts) */
+  method?: unknown;
+  /** the adaptive method's tolerances */
+  rtol?: unknown;
+  atol?: unknown;
 }
 
 /**
@@ -55,7 +61,14 @@ export function modelSpec(options: ModelOptions): HamiltonianSpec {
   const dof = options.dof ?? flattenInitial(options.initial).dim / 2;
   if (!Number.isInteger(dof) || dof < 1) throw new Error(`simulator: dof must be a whole number ≥ 1, not ${dof}`);
   const { hamiltonian, vectorField, gradient, params, coordinates, momenta, differentiation } = options;
-  return { dof, hamiltonian, vectorField, gradient, params, coordinates, momenta, differentiation };
+  let method;
+  try {
+    method = methodChoice(options.method ?? 'rk38', options.rtol, options.atol);
+  } catch (error) {
+    throw new Error(`simulator: ${(error as Error).message}`);
+  }
+  // RK 3/8 is left out of the spec, so the default model's spec (and its compiled model) is what it was.
+  return { dof, hamiltonian, vectorField, gradient, params, coordinates, momenta, differentiation, ...(method.name === 'rk38' ? {} : { method }) };
 }
 
 /**

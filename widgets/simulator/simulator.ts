@@ -46,6 +46,10 @@ export interface SimulatorOptions {
   coordinates?: readonly string[];
   momenta?: readonly string[];
   differentiation?: HamiltonianSpec['differentiation'];
+  /** the integration method: 'rk38' (default), 'verlet', 'yoshida4', 'midpoint' or 'adaptive' (with rtol, atol) */
+  method?: string;
+  rtol?: number;
+  atol?: number;
   /** start running at once (default true) */
   autoplay?: boolean;
   /** the cell's invalidation promise: the simulator stops and frees its memory when it resolves */
