@@ -121,3 +121,22 @@ for (const width of [1280, 390]) {
     await page.close();
   });
 }
+
+test('axe finds no violation with a cell’s editor open on a line wider than the phone', async () => {
+  const page = await site.context.newPage();
+  await page.setViewportSize({ width: 390, height: 900 });
+  await page.goto(`${site.origin}/playground/`);
+  await cellsReady(page);
+  await page.locator('[data-cell="params"] .cell-editor').click();
+  await page.waitForSelector('[data-cell="params"] .cm-content');
+  await page.keyboard.press('End');
+  await page.keyboard.insertText(' // a comment long enough to make this line wider than any phone is');
+  const scrolls = await page.locator('[data-cell="params"] .cm-scroller').evaluate((e) => e.scrollWidth > e.clientWidth);
+  assert.ok(scrolls, 'the editor scrolls sideways');
+  await page.evaluate(AXE);
+  const violations = await page.evaluate(async () =>
+    (await window.axe.run(document, { resultTypes: ['violations'] })).violations.map((v) => `${v.id} (${v.nodes.length}): ${v.nodes[0]?.target.join(' ')}`),
+  );
+  assert.deepEqual(violations, []);
+  await page.close();
+});

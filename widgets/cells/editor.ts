@@ -62,7 +62,9 @@ export function mountEditor(host: HTMLElement, options: EditorOptions, clickAt?:
       cellJavascript(),
       syntaxHighlighting(classHighlighter),
       cellTheme,
-      EditorView.contentAttributes.of({ 'aria-label': options.label }),
+      // tabindex makes the editable content count as focusable for the scroller around it (axe's
+      // scrollable-region-focusable); it is the element Tab reaches already, so no stop is added.
+      EditorView.contentAttributes.of({ 'aria-label': options.label, tabindex: '0' }),
       EditorView.updateListener.of((update) => {
         if (update.docChanged) options.onChange(update.state.doc.toString());
       }),
