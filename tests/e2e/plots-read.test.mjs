@@ -194,7 +194,7 @@ test('the batch readout says the drift, then which trajectory: the count never r
   });
   assert.equal(item[0], '|ΔH/H₀|');
   assert.match(item[1], /^(0|\d\.\d × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)$/);
-  assert.equal(item[2], '(worst of 9 trajectories)');
+  assert.equal(item[2], '(worst of 9)');
   assert.deepEqual(problems, []);
   await page.close();
 });

@@ -46,7 +46,7 @@ export class Readouts {
     this.hItem.hidden = !this.tracker.hasEnergy || batch;
     this.driftItem.hidden = !this.tracker.hasEnergy;
     this.driftLabel.textContent = '|ΔH/H₀|';
-    this.driftNote.textContent = batch ? `(worst of ${simulation.count} trajectories)` : '';
+    this.driftNote.textContent = batch ? `(worst of ${simulation.count})` : '';
     this.update(simulation, true);
   }
 

@@ -26,24 +26,6 @@ export interface AxisStyle {
 /** Room left of the plot area for y tick labels, and below it for t labels. */
 export const MARGIN = { left: 56, right: 16, top: 8, bottom: 24 };
 
-/** Labels closer than this (CSS pixels) to a kept one are dropped. */
-export const MIN_LABEL_GAP = 13;
-
-/**
- * The ticks whose labels do not crowd each other: 0 is kept first, then the
- * largest magnitudes, each only if it is at least `gap` pixels from every
- * tick already kept. A symlog axis bunches ±1, ±10 around 0; this thins them.
- */
-export function spacedTicks(values: readonly number[], position: (v: number) => number, gap = MIN_LABEL_GAP): number[] {
-  const order = [...values].sort((a, b) => (a === 0 ? -1 : b === 0 ? 1 : Math.abs(b) - Math.abs(a)));
-  const kept: { v: number; at: number }[] = [];
-  for (const v of order) {
-    const at = position(v);
-    if (kept.every((k) => Math.abs(k.at - at) >= gap)) kept.push({ v, at });
-  }
-  return kept.map((k) => k.v).sort((a, b) => a - b);
-}
-
 /**
  * Horizontal grid lines at every tick and left labels where given, for
  * ticks at y = `position(v)`; labels relative to an offset get it written

@@ -141,13 +141,13 @@ export class TimeRenderer {
   }
 
   /**
-   * After a whole window without growth, fits the range again to the data
+   * After half a window without growth, fits the range again to the data
    * in view if growth left it much too loose (checked every eighth of a
    * window): a running plot hugs its data, while one that keeps growing is
    * never shrunk between growths. Returns whether it refitted (and redrew).
    */
   private settleRange(record: TrajectoryRecord): boolean {
-    if (this.end - this.changedAt < this.width || this.end - this.checkedAt < this.width / 8) return false;
+    if (this.end - this.changedAt < this.width / 2 || this.end - this.checkedAt < this.width / 8) return false;
     this.checkedAt = this.end;
     const [from] = record.range(this.timeOf(this.end - this.width), Infinity);
     const [lo, hi] = this.extent(record, from, record.length);

@@ -1,45 +1,61 @@
 import { describe, expect, it } from 'vitest';
-import { spacedTicks } from '../../../widgets/plots/axes.ts';
-import { axisTicks, formatPower, scientificFormat } from '../../../widgets/plots/ticks.ts';
+import type { Theme } from '../../../widgets/plots/colors.ts';
+import { drawTimeFrame, fontSize, plotBox } from '../../../widgets/plots/time-plot-parts.ts';
+import { formatPower } from '../../../widgets/plots/ticks.ts';
 import { yScale } from '../../../widgets/plots/y-map.ts';
+import { FakeContext } from './fake-context.ts';
 
-describe('plots/ticks', () => {
-  it('axisTicks("linear", domain, n) gives d3’s round ticks and labels', () => {
-    const { values, format } = axisTicks('linear', [0, 10], 5);
-    expect(values).toEqual([0, 2, 4, 6, 8, 10]);
-    expect(values.map(format)).toEqual(['0', '2', '4', '6', '8', '10']);
-    expect(axisTicks('linear', [-1, 1], 4).format(-0.5)).toBe('−0.5');
-  });
+const THEME: Theme = { text: '#000', axis: '#111', grid: '#ccc', background: '#fff', series: ['red'], font: '11px sans-serif' };
 
-  it('axisTicks("symlog", domain, n) gives 0 and signed powers of ten, thinned to n', () => {
-    expect(axisTicks('symlog', [-150, 2000], 10).values).toEqual([-100, -10, -1, 0, 1, 10, 100, 1000]);
-    const thin = axisTicks('symlog', [-1e20, 1e20], 6).values;
-    expect(thin.length).toBeLessThanOrEqual(6);
-    expect(thin).toContain(0);
-    for (const v of thin) if (v !== 0) expect(Math.log10(Math.abs(v)) % 1).toBe(0);
-  });
+/** The y labels a time plot's frame draws, with their heights, for a domain on a plot `height` px tall. */
+function yLabels(kind: 'linear' | 'symlog', domain: [number, number], height = 244) {
+  const ctx = new FakeContext();
+  const box = plotBox(640, height);
+  const state = { box, kind, domain, inset: 0.02, t0: 0, t1: 10 };
+  const labels = drawTimeFrame(ctx as never, state, THEME, 640, height);
+  const drawn = ctx.calls.filter((c) => c[0] === 'fillText' && c[2] === box.x - 6).map((c) => ({ text: c[1] as string, y: c[3] as number }));
+  return { labels, drawn, box };
+}
 
-  it('axisTicks("symlog", small domain) falls back to linear ticks', () => {
-    expect(axisTicks('symlog', [-2, 2], 5).values).toEqual([-2, -1, 0, 1, 2]);
-  });
-
+describe('plots/ticks and the time plot’s y axis', () => {
   it('formatPower(v) writes 10ⁿ from 10⁴ on, with a true minus', () => {
     expect([0, 1, -10, 1000, 1e4, -1e20].map(formatPower)).toEqual(['0', '1', '−10', '1000', '10⁴', '−10²⁰']);
   });
 
-  it('large linear ticks are labelled m×10ⁿ with the decimals the step needs', () => {
-    const { values, format } = axisTicks('linear', [0, 6e9], 4);
-    expect(values.map(format)).toEqual(['0', '2×10⁹', '4×10⁹', '6×10⁹']);
-    expect(scientificFormat([1e-5, 1.5e-5, 2e-5])(1.5e-5)).toBe('1.5×10⁻⁵');
+  it('fontSize reads the pixel size of a canvas font', () => {
+    expect(fontSize('11px Inter')).toBe(11);
+    expect(fontSize('600 12.5px system-ui')).toBe(12.5);
   });
 
-  it('spacedTicks(values, position, gap) keeps 0 and drops labels crowding it', () => {
-    const scale = yScale('symlog', [-1e6, 1e6], [400, 0]);
-    const kept = spacedTicks([-1e6, -1e3, -10, -1, 0, 1, 10, 1e3, 1e6], scale, 13);
-    expect(kept).toContain(0);
-    expect(kept).not.toContain(1);
-    expect(kept).not.toContain(-1);
-    const at = kept.map((v) => scale(v)).sort((a, b) => a - b);
-    for (let i = 1; i < at.length; i++) expect(at[i] - at[i - 1]).toBeGreaterThanOrEqual(13);
+  it('the time plot’s y axis labels every decade of a symlog range its height has room for', () => {
+    const { drawn } = yLabels('symlog', [-1e6, 1e6], 400);
+    const texts = drawn.map((d) => d.text);
+    for (const k of [1, 2, 3, 4, 5, 6]) {
+      expect(texts).toContain(formatPower(10 ** k));
+      expect(texts).toContain(formatPower(-(10 ** k)));
+    }
+    expect(texts).toContain('0');
+  });
+
+  it('its labels are a line of text apart and fit left of the plot, at every magnitude', () => {
+    for (let e = -12; e <= 15; e++) {
+      for (const kind of ['linear', 'symlog'] as const) {
+        const domain: [number, number] = [-3 * 10 ** e, 7 * 10 ** e];
+        const { drawn, box } = yLabels(kind, domain);
+        expect(drawn.length, `${kind} 10^${e}`).toBeGreaterThanOrEqual(2);
+        const ys = drawn.map((d) => d.y).sort((a, b) => a - b);
+        for (let i = 1; i < ys.length; i++) expect(ys[i] - ys[i - 1]).toBeGreaterThanOrEqual(11);
+        // the fake context measures 6 px a character: every label within the room left of the plot
+        for (const d of drawn) expect(d.text.length * 6).toBeLessThanOrEqual(box.x - 8);
+        const y = yScale(kind, domain, [box.y + box.height * 0.98, box.y + box.height * 0.02]);
+        for (const d of drawn) expect(d.y).toBeGreaterThanOrEqual(y(domain[1]) - 1);
+      }
+    }
+  });
+
+  it('a tiny span far from zero gets short labels and its offset written once, under them', () => {
+    const { labels, drawn } = yLabels('linear', [1e9, 1e9 + 1e-3]);
+    expect(labels.offsetText).toBe('1×10⁹');
+    expect(drawn.map((d) => d.text)).toContain('+1×10⁹');
   });
 });
