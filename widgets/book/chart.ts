@@ -58,7 +58,7 @@ function legend(chart: SettledChart): HTMLUListElement {
     if (!s.label) continue;
     const item = document.createElement('li');
     const swatch = document.createElement('span');
-    swatch.className = 'pb-swatch';
+    swatch.className = 'pb-chart-swatch';
     swatch.dataset.kind = s.kind;
     if (s.dash.length) swatch.dataset.dashed = '';
     swatch.setAttribute('aria-hidden', 'true');
@@ -132,7 +132,7 @@ export function chart(options: ChartOptions): HTMLElement {
     g.clearRect(0, 0, width, height);
     drawChart(g, settled, width, theme, dpr);
     figure.dataset.ready = '';
-    const swatches = key.querySelectorAll<HTMLElement>('.pb-swatch');
+    const swatches = key.querySelectorAll<HTMLElement>('.pb-chart-swatch');
     settled.series.filter((s) => s.label).forEach((s, i) => swatches[i]?.style.setProperty('--pb-swatch', colorOf(s, theme as Theme)));
   };
   const redraw = () => draw();
