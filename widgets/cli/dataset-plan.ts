@@ -19,7 +19,7 @@ import type { BlockOrder } from './formats/dataset-shape.ts';
 import type { Task } from './dataset-task.ts';
 
 /**
- * 256 KB of numbers per task. Each worker keeps a pool of buffers this size,
+ * 128 KB of numbers per task. Each worker keeps a pool of buffers this size,
  * as many as can be out at once (the results the scheduler holds, one being
  * filled, one on its way back), so the largest tasks decide how much memory
  * a run holds beyond the process itself: at 1 MB a task, a run writing every
@@ -27,7 +27,7 @@ import type { Task } from './dataset-task.ts';
  * task of every step is still thousands of steps, far more than its message
  * costs (tens of microseconds).
  */
-export const BLOCK_VALUES = 1 << 15;
+export const BLOCK_VALUES = 1 << 14;
 /**
  * Numbers per task whose rows go out as text: their string (about 20 bytes a
  * number, and more while it is built) lives on the JS heap, and a few tasks
