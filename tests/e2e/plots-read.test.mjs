@@ -250,6 +250,9 @@ test('every plot has a Table toggle, operable by keyboard, showing its data as a
   const sim = page.locator('[data-cell="sim"] [data-widget="simulator"]');
   await sim.scrollIntoViewIfNeeded();
   await page.waitForTimeout(3000);
+  // paused, so that the table and the plot it is compared with hold the same samples (the spectrum's last recompute comes after)
+  await sim.evaluate((el) => el.simulator.pause());
+  await page.waitForTimeout(800);
   for (const kind of ['time-plot', 'phase-portrait', 'spectrum']) {
     const plot = sim.locator(`[data-widget="${kind}"]`);
     const button = plot.locator('button.pb-table-toggle');
@@ -277,13 +280,16 @@ test('every plot has a Table toggle, operable by keyboard, showing its data as a
       assert.ok(Math.abs(Number(table.rows[0][1]) - peak) < 1e-3 * peak, `${table.rows[0][1]} vs ${peak}`);
     } else {
       assert.deepEqual(table.head.map(([h]) => h).slice(0, 3), ['t', 'q', 'p']);
-      // each row is the record's sample at that time
+      // each row is the record's sample at that time: a row whose t and q round to what the table says (4 significant digits)
       const ok = await sim.evaluate((el, rows) => {
         const rec = el.simulator.simulation.record;
+        const read = (text) => Number(text.replace('−', '-').replace(' × 10', 'e').replace(/[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+$/, (e) => e.replace('⁻', '-').replace(/[⁰¹²³⁴⁵⁶⁷⁸⁹]/g, (d) => '⁰¹²³⁴⁵⁶⁷⁸⁹'.indexOf(d))));
+        const halfDigit = (v) => (v === 0 ? 5e-5 : 0.5 * 10 ** (Math.floor(Math.log10(Math.abs(v))) - 3)) * (1 + 1e-9);
         return rows.every(([t, q]) => {
-          const [, end] = rec.range(-Infinity, Number(t.replace('−', '-')) + 1e-3);
-          const row = end - 1;
-          return Math.abs(rec.get(row, 1) - Number(q.replace('−', '-'))) <= 1e-3 * Math.max(1, Math.abs(rec.get(row, 1))) * 10;
+          const [tv, qv] = [read(t), read(q)];
+          const [from, to] = rec.range(tv - halfDigit(tv), tv + halfDigit(tv));
+          for (let r = from; r < to; r++) if (Math.abs(rec.get(r, 1) - qv) <= halfDigit(qv)) return true;
+          return false;
         });
       }, table.rows);
       assert.ok(ok, JSON.stringify(table.rows.slice(0, 3)));
