@@ -26,7 +26,9 @@ function shortSource(source: string, max = 70): string {
 
 export function modelSummary(model: Model): string {
   const h = model.route === 'vector-field' || model.route === 'gradient' ? '' : `, H = ${shortSource(model.source)}`;
-  return `Model: ${model.dof} DOF, ${DERIVATIVES[model.route]}${h}`;
+  // The method is named only when it is not the default RK 3/8.
+  const method = model.method ? `, ${model.method.name}` : '';
+  return `Model: ${model.dof} DOF, ${DERIVATIVES[model.route]}${method}${h}`;
 }
 
 /** The model with its summary attached (not enumerable: it is no field of the model's). */

@@ -7,6 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { canonicalEquations } from '../../../widgets/core/canonical-equations.ts';
 import { exportMeta } from '../../../widgets/core/export-meta.ts';
 import { Simulation } from '../../../widgets/core/simulation.ts';
+import { modelSummary } from '../../../widgets/core/summary.ts';
 import { checkOptionNames, modelSpec } from '../../../widgets/simulator/options.ts';
 
 describe('simulator option method', { timeout: 30_000 }, () => {
@@ -22,6 +23,8 @@ describe('simulator option method', { timeout: 30_000 }, () => {
     simulation.run(100);
     const meta = exportMeta(simulation);
     expect(meta.method).toBe(method);
+    // The cells' inspector names the method of a model that has one.
+    expect(modelSummary(model)).toBe(`Model: 1 DOF, exact derivatives, ${method}, H = p^2/2 - cos(q)`);
     expect(Object.keys(meta).slice(0, 6)).toEqual(['hamiltonian', 'params', 'dof', 'dt', 'method', 'every']);
     // The run is the method's: energy within its bounded error of H₀ = −cos 1 (a check that it ran, not a bound to tune).
     const h = simulation.record.column('H');
