@@ -1,0 +1,121 @@
+/**
+ * The book's chart() and table() as a reader meets them (widgets/book/chart.ts,
+ * table.ts): a chart's text description and its data-table view reached by
+ * keyboard, its CSV holding every point drawn and its PNG the figure with its
+ * legend, a redraw when the theme changes; Kepler's live table updating in
+ * place, so that a phone reader who scrolled to the "change" column keeps it
+ * in view.
+ */
+import assert from 'node:assert/strict';
+import { readFile } from 'node:fs/promises';
+import { after, before, test } from 'node:test';
+import { chartIn, widgetsReady } from './chapter-checks.mjs';
+import { openChapter, openSite } from './fixture.mjs';
+
+/** @type {Awaited<ReturnType<typeof openSite>>} */
+let site;
+before(async () => (site = await openSite({ acceptDownloads: true })));
+after(() => site?.close());
+
+const DEFLECTION = 'Deflection angle against impact parameter';
+
+test('a chart says what it shows, opens its data by keyboard, and downloads every point as CSV and the figure as PNG', async () => {
+  const { page, problems } = await openChapter(site, '/scattering/');
+  await widgetsReady(page);
+  const { series, description } = await chartIn(page, DEFLECTION);
+  const figure = page.locator(`[data-widget="chart"][data-label="${DEFLECTION}"]`);
+  const canvas = figure.locator('canvas');
+  assert.equal(await canvas.getAttribute('role'), 'img');
+  assert.equal(await canvas.getAttribute('aria-label'), DEFLECTION);
+  const described = await canvas.getAttribute('aria-describedby');
+  assert.equal(await page.locator(`#${described}`).textContent(), description);
+  assert.match(description, /simulated beam: 29 points, x from 0\.3 to 4\.5/);
+
+  // The data table, by keyboard: focus its summary, Enter opens it; a table per curve, with every point of the beam.
+  const summary = figure.locator('.pb-chart-data > summary');
+  await summary.focus();
+  await page.keyboard.press('Enter');
+  const tables = figure.locator('.pb-chart-data table');
+  await tables.first().waitFor();
+  assert.equal(await tables.count(), series.length);
+  const beam = tables.filter({ has: page.locator('caption', { hasText: /^simulated beam$/ }) });
+  const rows = await beam.locator('tbody tr').evaluateAll((trs) => trs.map((tr) => [...tr.cells].map((c) => Number(c.textContent))));
+  const drawn = series.find((s) => s.label === 'simulated beam').values[0];
+  assert.equal(rows.length, 29);
+  rows.forEach(([x, y], i) => {
+    assert.ok(Math.abs(x - drawn.x[i]) <= 1e-11 * Math.abs(drawn.x[i]));
+    assert.ok(Math.abs(y - drawn.y[i]) <= 1e-11 * Math.abs(drawn.y[i]));
+  });
+
+  // CSV: a row a point of every curve drawn, each number the same double.
+  const [csv] = await Promise.all([page.waitForEvent('download'), figure.getByRole('button', { name: 'CSV' }).click()]);
+  assert.equal(csv.suggestedFilename(), 'deflection-angle-against-impact-parameter.csv');
+  const lines = (await readFile(await csv.path(), 'utf8')).trim().split('\n');
+  assert.equal(lines[0], 'series,impact parameter |b|,deflection θ (degrees)');
+  assert.equal(lines.length - 1, series.reduce((n, s) => n + s.points, 0));
+  const beamRows = lines.filter((l) => l.startsWith('simulated beam,')).map((l) => l.split(',').slice(1).map(Number));
+  assert.deepEqual(beamRows, drawn.x.map((x, i) => [x, drawn.y[i]]));
+
+  // PNG: the canvas's device pixels across, and taller than the canvas by the legend drawn under it.
+  const [png] = await Promise.all([page.waitForEvent('download'), figure.getByRole('button', { name: 'PNG' }).click()]);
+  const bytes = await readFile(await png.path());
+  assert.deepEqual([...bytes.subarray(1, 4)], [...Buffer.from('PNG')]);
+  const [width, height] = [bytes.readUInt32BE(16), bytes.readUInt32BE(20)];
+  const size = await canvas.evaluate((c) => [c.width, c.height]);
+  assert.equal(width, size[0]);
+  assert.ok(height > size[1], `PNG ${width}×${height}, canvas ${size}`);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a chart redraws in the colours of the theme the reader picks', async () => {
+  const { page } = await openChapter(site, '/scattering/');
+  await chartIn(page, DEFLECTION);
+  const canvas = page.locator(`[data-widget="chart"][data-label="${DEFLECTION}"] canvas`);
+  // The tick labels are drawn in the theme's muted text colour: count the pixels of each theme's.
+  const inColour = (rgb) =>
+    canvas.evaluate((c, rgb) => {
+      const data = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let n = 0;
+      for (let i = 0; i < data.length; i += 4) if (data[i + 3] === 255 && Math.abs(data[i] - rgb[0]) + Math.abs(data[i + 1] - rgb[1]) + Math.abs(data[i + 2] - rgb[2]) < 6) n++;
+      return n;
+    }, rgb);
+  const LIGHT_MUTED = [0x5e, 0x5b, 0x55];
+  const DARK_MUTED = [0x9d, 0x9b, 0xa3];
+  await page.evaluate(() => (document.documentElement.dataset.theme = 'light'));
+  await page.waitForTimeout(200);
+  const light = [await inColour(LIGHT_MUTED), await inColour(DARK_MUTED)];
+  await page.evaluate(() => (document.documentElement.dataset.theme = 'dark'));
+  await page.waitForTimeout(200);
+  const dark = [await inColour(LIGHT_MUTED), await inColour(DARK_MUTED)];
+  assert.ok(light[0] > 20 && light[1] === 0, `light theme: ${light}`);
+  assert.ok(dark[1] > 20 && dark[0] === 0, `dark theme: ${dark}`);
+  await page.close();
+});
+
+test('Kepler’s live table updates in place: a phone reader scrolled to the "change" column keeps it in view', async () => {
+  const { page, problems } = await openChapter(site, '/kepler/');
+  // A tall phone, so that the stars (which pause off screen) and the table are in view together.
+  await page.setViewportSize({ width: 360, height: 7000 });
+  const box = page.locator('[data-widget="table"]');
+  await box.evaluate((b) => b.scrollIntoView({ block: 'end' }));
+  await page.waitForFunction(() => {
+    const [sim, table] = ['[data-widget="simulator"]', '[data-widget="table"]'].map((s) => document.querySelector(s).getBoundingClientRect());
+    return sim.top >= 0 && table.bottom <= innerHeight;
+  });
+  assert.equal(await box.getAttribute('role'), 'region');
+  assert.equal(await box.getAttribute('tabindex'), '0');
+  const change = box.locator('thead th', { hasText: 'change' });
+  assert.match((await change.getAttribute('class')) ?? '', /pb-highlight/);
+  // The reader scrolls the box to its end.
+  await box.evaluate((b) => (b.scrollLeft = b.scrollWidth));
+  const left = await box.evaluate((b) => b.scrollLeft);
+  assert.ok(left > 0);
+  const caption = await box.locator('caption').textContent();
+  await page.waitForFunction((before) => document.querySelector('[data-widget="table"] caption')?.textContent !== before, caption, { timeout: 10_000 });
+  assert.equal(await box.evaluate((b) => b.scrollLeft), left);
+  const [th, vw] = await Promise.all([change.boundingBox(), page.evaluate(() => document.documentElement.clientWidth)]);
+  assert.ok(th && th.x >= 0 && th.x + th.width <= vw, `the change column at ${th?.x}…${(th?.x ?? 0) + (th?.width ?? 0)} of ${vw}`);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
