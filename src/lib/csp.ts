@@ -11,7 +11,10 @@
  *   other inline script;
  * - inline styles (KaTeX's typesetting and the widgets position things
  *   with style attributes);
- * - `data:` and `blob:` images (the favicon, plot downloads).
+ * - `data:` and `blob:` images (the favicon, plot downloads);
+ * - workers from the book's own scripts only (`worker-src 'self'`): the
+ *   compile, stability and simulation workers are bundled modules of the
+ *   site, and make no request of their own.
  *
  * A blocked request shows under the cell that made it (widgets/cells/boot.ts).
  */

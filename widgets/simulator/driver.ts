@@ -2,6 +2,7 @@ import { MAX_SPEED, outside } from './limits.ts';
 import type { Simulation } from '../core/simulation.ts';
 import { carryOver, DEFAULT_BUDGET, integrateFrame, owedSteps, type Budget } from './frame-budget.ts';
 import type { View } from './view.ts';
+import { WorkerIntegrator } from './worker-integrator.ts';
 
 /** Measurements of the last frames, for readouts and tests. */
 export interface FrameStats {
@@ -36,6 +37,8 @@ export interface DriverOptions {
   element?: HTMLElement;
   /** how long the element may stay detached before the driver disposes itself (default 60 s) */
   detachedLimitMs?: number;
+  /** integrate a model of generated code in a worker once it has loaded (default true); false keeps it on the page */
+  worker?: boolean;
 }
 
 const clock = (): number => performance.now();
@@ -48,6 +51,13 @@ const clock = (): number => performance.now();
  * the page or scrolled out of view (so a page whose widgets are out of
  * sight goes idle; they resume, where they were, when scrolled back), and
  * pauses with the error on a blow-up.
+ *
+ * A model of generated code (an expression H, portable-model.ts) is
+ * integrated in a worker from its first Play on (worker-integrator.ts), the
+ * page integrating until the worker has loaded: frames then only
+ * append the samples it computed ahead, so the model's cost falls on no
+ * frame. An opaque JS function, or a page where no worker can run,
+ * integrates here within the frame budget.
  */
 export class Driver {
   playing = false;
@@ -65,6 +75,8 @@ export class Driver {
   /** False while the element is scrolled out of view (see the class comment). */
   private inView = true;
   private readonly viewObserver: IntersectionObserver | null;
+  /** The worker that integrates for this driver: undefined until the first Play, null when there is none. */
+  private offload: WorkerIntegrator | null | undefined;
 
   constructor(
     public simulation: Simulation,
@@ -99,6 +111,11 @@ export class Driver {
     return this.simulation.error;
   }
 
+  /** Where the integration runs now: in the simulation worker, or on the page. */
+  get integrator(): 'worker' | 'page' {
+    return this.offload?.live ? 'worker' : 'page';
+  }
+
   play(): void {
     if (this.disposed || this.playing || this.simulation.error) return;
     this.playing = true;
@@ -106,6 +123,7 @@ export class Driver {
     this.carry = 0;
     this.views.forEach((v) => v.setPlaying?.(true));
     this.emit('state', { playing: true, error: null });
+    this.startWorker();
     this.schedule();
   }
 
@@ -125,7 +143,8 @@ export class Driver {
   step(): void {
     this.pause();
     if (this.disposed || this.simulation.error) return;
-    this.simulation.run(this.simulation.every);
+    if (this.offload?.live) this.offload.step(this.simulation, this.simulation.every);
+    else this.simulation.run(this.simulation.every);
     this.drawNow();
   }
 
@@ -161,6 +180,7 @@ export class Driver {
     this.disposed = true;
     this.playing = false;
     if (this.raf) cancelAnimationFrame(this.raf);
+    this.offload?.dispose();
     document.removeEventListener('visibilitychange', this.onVisibility);
     this.viewObserver?.disconnect();
     this.views.forEach((v) => v.dispose());
@@ -171,11 +191,32 @@ export class Driver {
   private afterReset(): void {
     this.carry = 0;
     this.last = NaN;
+    // A new generation: nothing the worker computed for the old state reaches the record.
+    if (this.offload?.live) this.offload.sync(this.simulation);
     this.views.forEach((v) => v.reset(this.simulation));
     this.emit('reset', this.simulation);
     this.emit('state', { playing: this.playing, error: null });
     this.drawNow();
     if (this.playing) this.schedule();
+  }
+
+  /** Starts the worker at the first Play (not before: a page that only reads loads none). */
+  private startWorker(): void {
+    if (this.offload !== undefined || this.options.worker === false) return;
+    this.offload = WorkerIntegrator.start(
+      this.simulation,
+      () => {
+        if (this.disposed) return;
+        // The page integrated until now; the worker goes on from exactly here.
+        this.offload?.sync(this.simulation);
+        this.carry = 0;
+      },
+      () => {
+        // The page takes over from the simulation's present state, which is always consistent.
+        this.offload = null;
+        this.carry = 0;
+      },
+    );
   }
 
   private schedule(): void {
@@ -218,18 +259,34 @@ export class Driver {
     this.last = now;
     let steps = 0;
     let integrateMs = 0;
+    let measured = true;
     if (this.playing && this.attached()) {
       const sim = this.simulation;
       const owed = owedSteps(this.carry, elapsed, this.speed, sim.dt, this.budget);
-      const work = integrateFrame((n) => sim.run(n), owed, this.cost, clock, this.budget);
-      this.cost = work.costMs;
-      this.carry = carryOver(owed, work.steps, work.outOfBudget);
-      steps = work.steps;
-      integrateMs = work.ms;
+      const offload = this.offload;
+      if (offload?.live) {
+        const work = offload.advance(sim, owed, clock, this.budget);
+        // Waiting on the worker (its first chunk, a slow model): what is owed is kept, up to one long frame's worth.
+        const most = owedSteps(0, this.budget.maxElapsedMs, this.speed, sim.dt, this.budget);
+        this.carry = work.starved ? Math.min(owed - work.steps, most) : carryOver(owed, work.steps, work.outOfBudget);
+        offload.request(sim, this.targetRate);
+        steps = work.steps;
+        integrateMs = work.ms;
+        // Waiting for a new generation's first chunk is a start-up, not the model falling behind.
+        measured = !work.warming;
+      } else {
+        const work = integrateFrame((n) => sim.run(n), owed, this.cost, clock, this.budget);
+        this.cost = work.costMs;
+        this.carry = carryOver(owed, work.steps, work.outOfBudget);
+        steps = work.steps;
+        integrateMs = work.ms;
+      }
       const rate = (steps * 1000) / Math.max(1, Math.min(elapsed, this.budget.maxElapsedMs));
       const s = this.stats;
-      s.stepsPerSecond = s.frames === 0 ? rate : 0.9 * s.stepsPerSecond + 0.1 * rate;
-      s.pace = Math.min(1, s.stepsPerSecond / this.targetRate);
+      if (measured) {
+        s.stepsPerSecond = s.frames === 0 ? rate : 0.9 * s.stepsPerSecond + 0.1 * rate;
+        s.pace = Math.min(1, s.stepsPerSecond / this.targetRate);
+      }
     }
     this.drawNow(steps, integrateMs);
     if (this.simulation.error) this.pause();
