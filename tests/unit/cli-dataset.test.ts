@@ -331,7 +331,7 @@ describe('workers and shards', () => {
     const files = await Promise.all(
       [1, 2, 3].map(async (k) => {
         const out = join(dir, `w${k}.${format}`);
-        // 37 trajectories × 80 000 steps is past the size below which a run stays in one thread.
+        // --workers K is obeyed whatever the size of the run.
         const run = await spawn(['simulate', ...SET, '--workers', String(k), '--output', out]);
         expect(run.stderr).toBe('');
         return readFileSync(out);

@@ -21,8 +21,13 @@ import { progressBar } from './progress.ts';
 import { checkRunSize, datasetSize } from './run-size.ts';
 import { shardRange, type RunSpec } from './run-spec.ts';
 
-/** Below this many steps in all, worker threads cost more to start (tens of milliseconds each) than they save. */
-const WORKER_THRESHOLD_STEPS = 2_000_000;
+/**
+ * Below this many steps in all, a run left to choose stays in one thread:
+ * a worker costs about 65 ms of CPU to start (its code and the model), and
+ * 5e6 steps of a one-degree-of-freedom model take about 0.2 s, so two
+ * workers just begin to pay. A --workers given is obeyed whatever the size.
+ */
+const WORKER_THRESHOLD_STEPS = 5_000_000;
 
 export interface PreparedRun {
   spec: RunSpec;
@@ -92,7 +97,8 @@ export async function prepareRun(spec: RunSpec, options: { cache: boolean; force
 }
 
 export interface ExecuteOptions {
-  workers: number;
+  /** threads to run on; undefined: every core, once the run is large enough to repay starting them */
+  workers?: number;
   signal?: AbortSignal;
   /** rows per chunk in time order (a wide table's row group) */
   timeChunkRows?: number;
@@ -111,7 +117,7 @@ export function defaultWorkers(): number {
 export async function executeRun(run: PreparedRun, writer: DatasetWriter, options: ExecuteOptions): Promise<void> {
   const { shape, model, spec } = run;
   const total = run.steps * shape.count;
-  const wanted = total < WORKER_THRESHOLD_STEPS ? 1 : Math.max(1, options.workers);
+  const wanted = options.workers !== undefined ? Math.max(1, options.workers) : total < WORKER_THRESHOLD_STEPS ? 1 : defaultWorkers();
   const text = writerText(writer);
   const plan = planTasks({ ...shape, width: shape.columns.length }, writer.order, wanted, options.timeChunkRows ?? shape.samples, text ? TEXT_BLOCK_VALUES : BLOCK_VALUES);
   const workers = Math.max(1, Math.min(wanted, plan.runs));

@@ -21,8 +21,9 @@ A vector field ((t, x, dxdt) => { dxdt[0] = x[1]; dxdt[1] = -x[0]; }) is
 integrated as written. Compiled models are cached in $PHASEBOOK_CACHE_DIR,
 else $XDG_CACHE_HOME/phasebook/models, else ~/.cache/phasebook/models.
 
-Many trajectories run in one process, on --workers threads (every core by
-default), with the same bytes out whatever their number. --energy E solves
+Many trajectories run in one process, on --workers threads (by default every
+core, once a run has more than 5e6 steps to share), with the same bytes out
+whatever their number. --energy E solves
 H = E for one momentum, the first (p, p0) unless --solve-for names another,
 within its --box range; a drawn point with no solution there is dropped and
 another drawn. --shard i/n computes the i-th of n slices of the set, and

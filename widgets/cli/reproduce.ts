@@ -7,7 +7,7 @@
 import { InputError } from '../core/errors.ts';
 import { BLOCK_VALUES } from './dataset-plan.ts';
 import { specFromMeta } from './dataset-meta.ts';
-import { defaultWorkers, executeRun, prepareRun } from './dataset-run.ts';
+import { executeRun, prepareRun } from './dataset-run.ts';
 import { datasetWriter } from './dataset-writer.ts';
 import type { Block } from './formats/dataset-shape.ts';
 import { openDataset, type DatasetFile } from './formats/dataset-read.ts';
@@ -36,7 +36,7 @@ export async function reproduceCommand(argv: readonly string[]): Promise<{ text:
   const [path, ...rest] = argv;
   if (path === undefined || path.startsWith('--')) throw new InputError(`give the file to reproduce (usage: ${REPRODUCE_USAGE})`);
   const args = parseArgs(rest, { workers: 'value', 'no-cache': 'flag' });
-  const workers = args.values.has('workers') ? wholeNumber(args.values.get('workers')!, '--workers') : defaultWorkers();
+  const workers = args.values.has('workers') ? wholeNumber(args.values.get('workers')!, '--workers') : undefined;
   const file = await openDataset(path);
   const guard = new InterruptGuard();
   guard.hold();

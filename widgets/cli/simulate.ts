@@ -10,7 +10,7 @@ import { MAX_SEED } from '../core/dataset/philox.ts';
 import { methodChoice } from '../core/integrators/methods.ts';
 import { DEFAULT_DT } from '../core/simulation.ts';
 import { number, numberList, parseArgs, positive, wholeNumber } from './args.ts';
-import { defaultWorkers, executeRun, prepareRun, type PreparedRun } from './dataset-run.ts';
+import { executeRun, prepareRun, type PreparedRun } from './dataset-run.ts';
 import { datasetWriter } from './dataset-writer.ts';
 import { readInitialFile } from './initial-file.ts';
 import { Interrupted, InterruptGuard } from './interrupt.ts';
@@ -35,7 +35,8 @@ const FORMATS: readonly Format[] = ['csv', 'json', 'npz', 'parquet'];
 export interface SimulateArguments {
   spec: RunSpec;
   output?: string;
-  workers: number;
+  /** threads; undefined: every core for a run large enough to repay them */
+  workers?: number;
   cache: boolean;
   force: boolean;
 }
@@ -138,7 +139,7 @@ export function parseSimulate(argv: readonly string[]): SimulateArguments {
   const shard = shardText === undefined ? undefined : parseShard(shardText);
   if (shard && format === 'csv') throw new InputError('--shard writes a part for phasebook merge, which checks the parts by the meta a CSV cannot hold: give --format npz, parquet or json');
   const workersText = value('workers');
-  const workers = workersText === undefined ? defaultWorkers() : wholeNumber(workersText, '--workers');
+  const workers = workersText === undefined ? undefined : wholeNumber(workersText, '--workers');
   const spec: RunSpec = {
     hamiltonian,
     vectorField,
