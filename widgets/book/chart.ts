@@ -25,15 +25,21 @@ import { table } from './table.ts';
 
 export type { ChartAxisOptions, ChartColor, ChartCurve, ChartOptions, ChartRuleOptions, ChartSeriesOptions } from './chart-options.ts';
 
-/** Redraws of the charts on the page when the theme changes: the reader's toggle (<html data-theme>) or the system's scheme. */
-const redraws = new Set<() => void>();
+/**
+ * Redraws of the charts on the page when the theme changes: the reader's
+ * toggle (<html data-theme>) or the system's scheme. A chart leaves the set
+ * once it has left the page (its redraw returns false), so charts made
+ * again and again by a cell do not pile up.
+ */
+const redraws = new Set<() => boolean>();
 let watching = false;
 
-function watchTheme(redraw: () => void): void {
+function watchTheme(redraw: () => boolean): void {
+  for (const r of redraws) if (!r()) redraws.delete(r);
   redraws.add(redraw);
   if (watching || typeof window === 'undefined') return;
   watching = true;
-  const all = () => redraws.forEach((r) => r());
+  const all = () => redraws.forEach((r) => r() || redraws.delete(r));
   window.matchMedia?.('(prefers-color-scheme: dark)').addEventListener?.('change', all);
   new MutationObserver(all).observe(document.documentElement, { attributes: true, attributeFilter: ['data-theme', 'class', 'style'] });
 }
@@ -114,30 +120,34 @@ export function chart(options: ChartOptions): HTMLElement {
   let theme: Theme | null = null;
   let drawnWidth = 0;
   let seen = false;
-  const draw = (force = false) => {
+  /** Draws at the figure's width in the page's theme, unless both are as last drawn; false once the chart has left the page. */
+  const draw = (): boolean => {
     if (figure.isConnected) seen = true;
-    else if (seen) return void redraws.delete(redraw);
+    else return !seen;
     const width = Math.floor(figure.clientWidth);
-    if (!(width > 0)) return;
+    if (!(width > 0)) return true;
     const next = readTheme(figure);
-    if (!force && width === drawnWidth && theme && sameTheme(theme, next)) return;
+    if (width === drawnWidth && theme && sameTheme(theme, next)) return true;
     theme = next;
     drawnWidth = width;
     const dpr = pixelRatio();
     const { height } = layoutChart(settled, width);
     sizeCanvas(canvas, width, height, dpr);
     const g = canvas.getContext('2d') as ChartContext | null;
-    if (!g) return;
+    if (!g) return true;
     g.setTransform(dpr, 0, 0, dpr, 0, 0);
     g.clearRect(0, 0, width, height);
     drawChart(g, settled, width, theme, dpr);
     figure.dataset.ready = '';
     const swatches = key.querySelectorAll<HTMLElement>('.pb-chart-swatch');
     settled.series.filter((s) => s.label).forEach((s, i) => swatches[i]?.style.setProperty('--pb-swatch', colorOf(s, theme as Theme)));
+    return true;
   };
-  const redraw = () => draw();
-  watchTheme(redraw);
-  if (typeof ResizeObserver !== 'undefined') new ResizeObserver(redraw).observe(figure);
+  watchTheme(draw);
+  if (typeof ResizeObserver !== 'undefined') {
+    const resized = new ResizeObserver(() => draw() || resized.disconnect());
+    resized.observe(figure);
+  }
 
   /** The canvas with its legend under it, on the theme's background, as a PNG. */
   const savePng = async () => {

@@ -100,9 +100,11 @@ export function table(options: TableOptions): HTMLElement {
 
   if (live) {
     let seen = false;
+    let unseen = 0;
     const tick = () => {
       if (box.isConnected) seen = true;
-      else if (seen) return; // the cell was re-run or the page left it: stop reading
+      // The cell was re-run or the page left it (or it never showed the table, after a minute): stop reading.
+      else if (seen || ++unseen * refresh > 60) return;
       try {
         show(read());
       } catch (error) {
