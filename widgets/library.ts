@@ -68,6 +68,12 @@ export function createLibrary(page: PageContext): Record<string, unknown> {
     table: lazy(() => import('./book/table.ts').then((m) => m.table)),
     /** stabilityChart({hamiltonian, params, x, y, frequencyParam, boundaries, onSelect}) → Floquet chart computed in a worker */
     stabilityChart: lazy(() => import('./book/stability-chart.ts').then((m) => (options: Parameters<typeof m.stabilityChart>[0]) => m.stabilityChart(options, build()))),
+    /** poincareSection({energies, energy, plane, orbits, crossings, onLaunch}) → Hénon–Heiles surface of section computed in a worker; click to launch an orbit */
+    poincareSection: lazy(() => import('./book/poincare-section.ts').then((m) => m.poincareSection)),
+    /** chaoticShare({energy, plane, grid, time}) → Promise of the section's chaotic share and its errors, computed in a worker */
+    chaoticShare: lazy(() => import('./book/poincare-section.ts').then((m) => m.chaoticShare)),
+    /** henonHeilesFig6: the chaotic share read off Hénon & Heiles (1964) Fig. 6 at E = 1/12, 1/8, 1/6, with its reading error */
+    henonHeilesFig6: lazy(() => import('./core/analysis/poincare-area.ts').then((m) => m.HENON_HEILES_FIG6)),
 
     // The simulation core
     /** canonicalEquations({dof, hamiltonian, params}) → Promise of a Model */
