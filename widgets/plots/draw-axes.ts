@@ -137,7 +137,7 @@ export function drawAxes(g: CanvasRenderingContext2D, rect: Rect, mx: Mapping, m
   g.textAlign = 'right';
   g.textBaseline = 'middle';
   const room = left - 5 - TITLE_GAP - TITLE_SIZE;
-  y.values.forEach((v, i) => y.labels[i] && g.fillText(y.labels[i], left - 5, my.scale(v), Math.max(room, 20)));
+  y.values.forEach((v, i) => y.labels[i] && g.fillText(y.labels[i], left - 5, my.scale(v)));
   const drawn = { x: readout(mx, x), y: readout(my, y, room) };
   const widest = Math.max(0, ...drawn.y.labels.map((l) => l.width));
   g.fillStyle = theme.fg;
@@ -145,7 +145,8 @@ export function drawAxes(g: CanvasRenderingContext2D, rect: Rect, mx: Mapping, m
   g.textAlign = 'center';
   g.textBaseline = 'bottom';
   g.fillText(titled(style.xLabel, x), left + width / 2, bottom + 36);
-  g.translate(left - Math.max(38, 5 + widest + TITLE_GAP), top + height / 2);
+  // left of the widest label, never off the canvas (a caller's margin may be narrower than leftMarginFor asks)
+  g.translate(Math.max(TITLE_SIZE + 1, left - Math.max(38, 5 + widest + TITLE_GAP)), top + height / 2);
   g.rotate(-Math.PI / 2);
   g.textBaseline = 'bottom';
   g.fillText(titled(style.yLabel, y), 0, 0);
