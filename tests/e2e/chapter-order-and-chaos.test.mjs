@@ -8,7 +8,7 @@
  */
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { assertAgrees, assertDrawn, assertLoadsClean, assertSumOfTerms, theoryChecks, useChapter } from './chapter-checks.mjs';
+import { assertAgrees, assertDrawn, assertLoadsClean, assertNoNaNShown, assertSumOfTerms, editAndReadChecks, theoryChecks, useChapter } from './chapter-checks.mjs';
 
 const SECTION = '[data-widget="poincare-section"]';
 
@@ -88,5 +88,14 @@ test('the keyboard launches an orbit too: arrows move the point, Enter launches'
   assert.doesNotMatch(await section.locator('.pb-stability-reading').textContent(), /outside/);
   await canvas.press('Enter');
   await page.waitForFunction((s) => document.querySelector(s).dataset.launched === '2', SECTION, { timeout: 30_000 });
+  assert.deepEqual(problems, []);
+});
+
+test('an energy the figure is not read at gets no verdict, and one above the escape energy is outside validity', async () => {
+  const { areaChecks } = await editAndReadChecks(page, 'energies', 'energies = [0.1, 0.2]', ['areaChecks']);
+  assert.deepEqual(areaChecks.map((c) => c.verdict), ['undefined', 'outside']);
+  assert.match(areaChecks[0].reason, /only at E = 1\/12, 1\/8 and 1\/6/);
+  assert.match(areaChecks[1].reason, /above the escape energy/);
+  await assertNoNaNShown(page);
   assert.deepEqual(problems, []);
 });
