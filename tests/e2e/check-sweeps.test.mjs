@@ -57,6 +57,7 @@ function assertVerdict(check, { valid, reference, predicted, formula, relative =
     const allowed = neither ? ['outside', 'undefined'] : ['outside'];
     assert.ok(allowed.includes(check.verdict), `expected ${allowed.join(' or ')}; ${about}`);
     assert.ok(check.reason, `a check outside its validity says why; ${about}`);
+    report(check, where);
     return check.verdict;
   }
   assertSumOfTerms(check);
@@ -70,7 +71,13 @@ function assertVerdict(check, { valid, reference, predicted, formula, relative =
   const expected = expectedVerdict({ valid, reference, predicted, formula, slack, relative });
   assert.notEqual(expected, 'ambiguous', `this point's verdict depends on where the measurement falls: choose another; ${about}`);
   assert.equal(check.verdict, expected, about);
+  report(check, where);
   return check.verdict;
+}
+
+/** One line per point on the test's output: the sweep's range of each verdict, for the record. */
+function report(check, where) {
+  console.log(`sweep | ${check.text.split('\n')[0].slice(0, 60)} | ${where} | ${check.verdict}`);
 }
 
 /** The one theory check of a cell, after an edit, from editAndReadChecks' result. */
