@@ -10,10 +10,12 @@
  * so overlap is judged with the browser's own text widths.
  */
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
+import { existsSync, readdirSync, readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
+import { join } from 'node:path';
 import { after, before, test } from 'node:test';
 import { cellsReady, openChapter, openSite, typeIntoCell } from './fixture.mjs';
+import { DIST } from './server.mjs';
 
 /** @type {Awaited<ReturnType<typeof openSite>>} */
 let site;
@@ -306,15 +308,20 @@ test('every plot has a Table toggle, operable by keyboard, showing its data as a
   await page.close();
 });
 
-/** Chapters with simulators. */
-const CHAPTERS = ['/introduction/', '/kepler/', '/nonlinear-oscillator/', '/parametric-resonance/', '/scattering/', '/adiabatic-invariants/', '/special-relativity/', '/for-teachers/', '/playground/'];
+/** Every page of the built book that has cells (those without simulators are passed over). */
+function chapters() {
+  return readdirSync(DIST, { withFileTypes: true })
+    .filter((e) => e.isDirectory() && !e.name.startsWith('_') && existsSync(join(DIST, e.name, 'index.html')))
+    .filter((e) => /data-reserve="simulator"|simulator\(/.test(readFileSync(join(DIST, e.name, 'index.html'), 'utf8')))
+    .map((e) => `/${e.name}/`);
+}
 
 test('at 360 px every simulator on every chapter fits the width, and its axes read: no touching labels, text ≥ 11 px', async (t) => {
   const page = await site.context.newPage();
   await page.setViewportSize({ width: 360, height: 800 });
   const report = [];
   let count = 0;
-  for (const path of CHAPTERS) {
+  for (const path of chapters()) {
     await page.goto(`${site.origin}${path}`);
     await cellsReady(page);
     const sims = await page.locator('[data-widget="simulator"]').count();
