@@ -114,6 +114,7 @@ test('the worker computes what the page computes: the same record and state, bit
   const result = await page.evaluate((selector) => {
     const handle = document.querySelector(selector).simulator;
     handle.pause();
+    const integrator = handle.driver.integrator;
     // Step, a sample at a time, through what the worker computed ahead (the first) and beyond it.
     const paused = handle.simulation.steps;
     for (let i = 0; i < 600; i++) handle.step();
@@ -129,7 +130,7 @@ test('the worker computes what the page computes: the same record and state, bit
     let firstDifference = -1;
     for (let i = 0; i < expected.data.length && firstDifference < 0; i++) if (!Object.is(table.data[i], expected.data[i])) firstDifference = i;
     return {
-      integrator: handle.driver.integrator,
+      integrator,
       stepped,
       steps: sim.steps,
       t: sim.t,

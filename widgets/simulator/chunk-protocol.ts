@@ -119,8 +119,6 @@ export class ChunkQueue {
   position = 0;
   /** the end of the last chunk accepted */
   received = 0;
-  /** where this generation started */
-  origin = 0;
   private readonly chunks: Chunk[] = [];
   /** index of the next row in chunks[0], or the row count when only its end is left */
   private row = 0;
@@ -130,7 +128,6 @@ export class ChunkQueue {
 
   reset(gen: number, position: number): void {
     this.gen = gen;
-    this.origin = position;
     this.position = position;
     this.received = position;
     this.chunks.length = 0;
@@ -196,6 +193,18 @@ export class ChunkQueue {
     this.position = chunk.end;
     const state = chunk.state!;
     return chunk.error ? { step: chunk.end, state, error: chunk.error } : { step: chunk.end, state };
+  }
+
+  /**
+   * Drops every point up to `step`, which the page reached by itself (the
+   * same numbers: it runs the same code); true once a point beyond it is
+   * there, and the queue then goes on from `step`.
+   */
+  skipTo(step: number, stateLength: number): boolean {
+    while (this.peek() <= step) this.take(stateLength);
+    if (this.peek() === Infinity) return false;
+    this.position = step;
+    return true;
   }
 
   private shift(): void {

@@ -54,7 +54,7 @@ const clock = (): number => performance.now();
  *
  * A model of generated code (an expression H, portable-model.ts) is
  * integrated in a worker from its first Play on (worker-integrator.ts), the
- * page integrating until the worker has loaded: frames then only
+ * page integrating until the worker has loaded and passed it: frames then only
  * append the samples it computed ahead, so the model's cost falls on no
  * frame. An opaque JS function, or a page where no worker can run,
  * integrates here within the frame budget.
@@ -111,9 +111,9 @@ export class Driver {
     return this.simulation.error;
   }
 
-  /** Where the integration runs now: in the simulation worker, or on the page. */
+  /** Where the integration runs now: in the simulation worker, or on the page (also while the worker starts). */
   get integrator(): 'worker' | 'page' {
-    return this.offload?.live ? 'worker' : 'page';
+    return this.offload?.serving ? 'worker' : 'page';
   }
 
   play(): void {
@@ -259,34 +259,31 @@ export class Driver {
     this.last = now;
     let steps = 0;
     let integrateMs = 0;
-    let measured = true;
     if (this.playing && this.attached()) {
       const sim = this.simulation;
       const owed = owedSteps(this.carry, elapsed, this.speed, sim.dt, this.budget);
       const offload = this.offload;
-      if (offload?.live) {
+      if (offload?.live && !offload.handingOver(sim)) {
         const work = offload.advance(sim, owed, clock, this.budget);
-        // Waiting on the worker (its first chunk, a slow model): what is owed is kept, up to one long frame's worth.
+        // Waiting on the worker (a slow model): what is owed is kept, up to one long frame's worth.
         const most = owedSteps(0, this.budget.maxElapsedMs, this.speed, sim.dt, this.budget);
         this.carry = work.starved ? Math.min(owed - work.steps, most) : carryOver(owed, work.steps, work.outOfBudget);
         offload.request(sim, this.targetRate);
         steps = work.steps;
         integrateMs = work.ms;
-        // Waiting for a new generation's first chunk is a start-up, not the model falling behind.
-        measured = !work.warming;
       } else {
         const work = integrateFrame((n) => sim.run(n), owed, this.cost, clock, this.budget);
         this.cost = work.costMs;
         this.carry = carryOver(owed, work.steps, work.outOfBudget);
         steps = work.steps;
         integrateMs = work.ms;
+        // Until the worker has passed the page (handingOver), it is asked ahead of where the page is.
+        offload?.request(sim, this.targetRate);
       }
       const rate = (steps * 1000) / Math.max(1, Math.min(elapsed, this.budget.maxElapsedMs));
       const s = this.stats;
-      if (measured) {
-        s.stepsPerSecond = s.frames === 0 ? rate : 0.9 * s.stepsPerSecond + 0.1 * rate;
-        s.pace = Math.min(1, s.stepsPerSecond / this.targetRate);
-      }
+      s.stepsPerSecond = s.frames === 0 ? rate : 0.9 * s.stepsPerSecond + 0.1 * rate;
+      s.pace = Math.min(1, s.stepsPerSecond / this.targetRate);
     }
     this.drawNow(steps, integrateMs);
     if (this.simulation.error) this.pause();

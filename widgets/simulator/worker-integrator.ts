@@ -29,8 +29,6 @@ export interface Consumed {
   outOfBudget: boolean;
   /** the worker had not yet computed what real time asked for */
   starved: boolean;
-  /** no chunk of this generation has come yet (just after a start, restart or new dt): no measure of pace */
-  warming: boolean;
 }
 
 export class WorkerIntegrator {
@@ -46,6 +44,8 @@ export class WorkerIntegrator {
   private readonly row = { scratch: new Float64Array(0) };
   private disposed = false;
   private loaded = false;
+  /** true from a new generation until the worker has passed the page, which integrates meanwhile */
+  private catchingUp = false;
 
   /**
    * A worker for the simulation's model, or null where none can run or the
@@ -102,6 +102,7 @@ export class WorkerIntegrator {
     this.queue.reset(this.gen, simulation.steps);
     this.requested = simulation.steps;
     this.live = true;
+    this.catchingUp = true;
     // A stopped simulation runs no further: the worker is left idle, and its old chunks are dropped.
     if (simulation.error) return;
     this.sentParams = Float64Array.from(simulation.model.params);
@@ -122,6 +123,30 @@ export class WorkerIntegrator {
     if (this.rate > 0) this.request(simulation, this.rate);
   }
 
+  /** True when the worker computes what the page shows (it is live and has passed the page). */
+  get serving(): boolean {
+    return this.live && !this.catchingUp;
+  }
+
+  /**
+   * True while the page should integrate by itself: from a new generation
+   * (the worker's start, a restart, a new dt) until the worker has computed
+   * past where the page now is. Both run the same code from the same state,
+   * so the page then simply goes on with the worker's samples beyond its own
+   * step, and no frame waits for the worker to start.
+   */
+  handingOver(simulation: Simulation): boolean {
+    const queue = this.queue;
+    if (!this.catchingUp || !queue) return this.catchingUp;
+    if (simulation.steps < queue.position) {
+      this.sync(simulation);
+      return true;
+    }
+    if (!queue.skipTo(simulation.steps, simulation.state.length)) return true;
+    this.catchingUp = false;
+    return false;
+  }
+
   /**
    * Asks the worker to stay LOOKAHEAD_SECONDS ahead at this pace (called
    * each frame while playing). A parameter written into the model since
@@ -134,8 +159,9 @@ export class WorkerIntegrator {
     if (this.paramsChanged(simulation.model.params)) this.sync(simulation);
     const queue = this.queue;
     if (!queue || queue.ended) return;
-    const target = lookaheadTarget(queue.position, stepsPerSecond, 8 * simulation.record.width, simulation.every);
-    if (target - this.requested < Math.max(1, (target - queue.position) / 4)) return;
+    const here = simulation.steps;
+    const target = lookaheadTarget(here, stepsPerSecond, 8 * simulation.record.width, simulation.every);
+    if (target - this.requested < Math.max(1, (target - here) / 4)) return;
     this.requested = target;
     this.post({ type: 'advance', gen: this.gen, target });
   }
@@ -148,11 +174,11 @@ export class WorkerIntegrator {
    */
   advance(simulation: Simulation, owed: number, clock: () => number, budget: Budget): Consumed {
     const queue = this.queue;
-    if (!queue) return { steps: 0, ms: 0, outOfBudget: false, starved: true, warming: true };
+    if (!queue) return { steps: 0, ms: 0, outOfBudget: false, starved: true };
     if (simulation.steps !== queue.position) {
       // Something moved the simulation behind the worker's back (a cell called run or restart): start again from there.
       this.sync(simulation);
-      return { steps: 0, ms: 0, outOfBudget: false, starved: true, warming: true };
+      return { steps: 0, ms: 0, outOfBudget: false, starved: true };
     }
     return consumeChunks(queue, simulation, owed, clock, budget, this.row);
   }
@@ -164,6 +190,10 @@ export class WorkerIntegrator {
    */
   step(simulation: Simulation, steps: number): void {
     const goal = simulation.steps + steps;
+    if (this.handingOver(simulation)) {
+      simulation.run(steps);
+      return;
+    }
     this.advance(simulation, steps, () => 0, { frameMs: Infinity, chunkMs: Infinity, maxElapsedMs: Infinity });
     if (simulation.steps < goal && !simulation.error) {
       simulation.run(goal - simulation.steps);
@@ -216,7 +246,6 @@ export function consumeChunks(
   row: { scratch: Float64Array } = { scratch: new Float64Array(0) },
 ): Consumed {
   const start = clock();
-  const warming = queue.received === queue.origin;
   const before = simulation.steps;
   const limit = before + owed;
   // The clock is read every few thousand values copied.
@@ -241,7 +270,7 @@ export function consumeChunks(
   }
   if (state) simulation.state.set(state);
   const starved = !outOfBudget && !simulation.error && queue.peek() === Infinity && limit - simulation.steps >= 1;
-  return { steps: simulation.steps - before, ms: clock() - start, outOfBudget, starved, warming };
+  return { steps: simulation.steps - before, ms: clock() - start, outOfBudget, starved };
 }
 
 /**

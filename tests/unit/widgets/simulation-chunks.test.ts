@@ -281,6 +281,30 @@ describe('simulator: chunks from the runner make the record the page would make'
     expect(rowsOf(page)).toEqual(rowsOf(direct));
   });
 
+  it('the hand-over: the page integrates by itself while the worker starts, then goes on with its samples past its own step', async () => {
+    const model = await driven();
+    const options = { initial: [2, 0], dt: 5e-4, every: 3, capacity: 10_000 };
+    const page = new Simulation(model, options);
+    const runner = new ChunkRunner(fakeClock(0.1), { sliceMs: 1, subMs: 0.3, bytes: 2000, stateValues: 64 });
+    const queue = new ChunkQueue(page.every);
+    runner.start(startOf(page, 1));
+    queue.reset(1, 0);
+    page.run(400);
+    // The worker has not yet passed the page: nothing to go on with.
+    for (const chunk of chunksTo(runner, 1, 300)) queue.accept(chunk);
+    expect(queue.skipTo(page.steps, 2)).toBe(false);
+    page.run(101);
+    for (const chunk of chunksTo(runner, 1, 3000)) queue.accept(chunk);
+    expect(queue.skipTo(page.steps, 2)).toBe(true);
+    expect(queue.position).toBe(501);
+    for (let frame = 0; frame < 1000 && page.steps < 3000; frame++) consumeChunks(queue, page, 41, fakeClock(0.001), DEFAULT_BUDGET);
+    const direct = new Simulation(model, options);
+    direct.run(3000);
+    expect(page.steps).toBe(3000);
+    expect(Array.from(page.state)).toEqual(Array.from(direct.state));
+    expect(rowsOf(page)).toEqual(rowsOf(direct));
+  });
+
   it('consumption keeps to the frame budget, and says when it waits on the worker', async () => {
     const model = await driven();
     const page = new Simulation(model, { initial: [2, 0], every: 1, capacity: 100_000 });
@@ -288,14 +312,13 @@ describe('simulator: chunks from the runner make the record the page would make'
     const queue = new ChunkQueue(1);
     runner.start(startOf(page, 1));
     queue.reset(1, 0);
-    // Before the first chunk of a generation: waiting, and no measure of the model's pace.
+    // Before the first chunk: nothing to take, and it says it waits.
     const first = consumeChunks(queue, page, 30, fakeClock(0), DEFAULT_BUDGET);
-    expect([first.steps, first.starved, first.warming]).toEqual([0, true, true]);
+    expect([first.steps, first.starved]).toEqual([0, true]);
     for (const chunk of chunksTo(runner, 1, 20_000)) queue.accept(chunk);
     // Each clock read costs 1 ms of the budget's 6: consumption stops early, out of budget.
     const slow = consumeChunks(queue, page, 20_000, fakeClock(1), DEFAULT_BUDGET);
     expect(slow.outOfBudget).toBe(true);
-    expect(slow.warming).toBe(false);
     expect(slow.steps).toBeGreaterThan(0);
     expect(slow.steps).toBeLessThan(20_000);
     const rest = consumeChunks(queue, page, 1e9, fakeClock(0), DEFAULT_BUDGET);
