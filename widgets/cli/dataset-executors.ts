@@ -11,6 +11,13 @@ import { TaskRunner, type Task, type TaskResult, type TaskSetup } from './datase
 
 export interface Executor {
   run(task: Task): Promise<TaskResult>;
+  /**
+   * Tasks it may be given before the first is done. A worker takes them in
+   * order from its queue, so it starts the next at once instead of waiting
+   * for the main thread to answer, which on a busy machine can take longer
+   * than the task; this thread's executor runs one at a time.
+   */
+  depth: number;
   /** hands back a result's buffer once written, to be filled again */
   recycle(data: Float64Array | Uint8Array): void;
   /** stops at once, abandoning any task under way */
@@ -51,6 +58,7 @@ export function localExecutor(model: Model, setup: TaskSetup, signal: AbortSigna
       }
       return runner.end(task, out, steps);
     },
+    depth: 1,
     recycle: (data) => runner.recycle(data.buffer as ArrayBuffer),
     async close() {},
   };
@@ -107,6 +115,7 @@ export function workerExecutor(init: WorkerInit): Executor {
         worker.postMessage(task);
       });
     },
+    depth: 2,
     recycle(data) {
       if (!failure) worker.postMessage({ recycle: data.buffer }, [data.buffer as ArrayBuffer]);
     },

@@ -129,7 +129,8 @@ export async function executeRun(run: PreparedRun, writer: DatasetWriter, option
     text,
     numberTrajectories: shape.total > 1,
     bufferValues: plan.maxValues,
-    spareBuffers: ahead + 2,
+    // The results held, the tasks queued in a worker, one on its way back.
+    spareBuffers: ahead + 3,
   };
   const bar = options.progress === false ? undefined : progressBar();
   let done = 0;

@@ -7,7 +7,9 @@
  * Results that arrive ahead of their turn wait, but at most `ahead` of them:
  * an executor whose next result is not the one to write pauses until there
  * is room, so memory stays bounded however uneven the work. The task to be
- * written next is never held back, so the run cannot stall.
+ * written next is never held back, so the run cannot stall. An executor is
+ * given up to its `depth` tasks at once (a worker's queue), each still in
+ * the plan's order for it.
  */
 import type { Executor } from './dataset-executors.ts';
 import type { Plan } from './dataset-plan.ts';
@@ -59,23 +61,42 @@ export async function schedule(plan: Plan, executors: readonly Executor[], optio
   };
   signal?.addEventListener('abort', onAbort);
 
-  const loop = async (executor: Executor, fixed: number | undefined) => {
+  /** The tasks an executor does, in order: every chunk of each run it takes (a run is taken when its first chunk is reached). */
+  function* tasksOf(fixed: number | undefined): Generator<number> {
     for (;;) {
       const run = fixed ?? (nextRun < plan.runs ? nextRun++ : undefined);
       if (run === undefined || run >= plan.runs) return;
-      for (let chunk = 0; chunk < plan.chunks; chunk++) {
-        const id = plan.seq(run, chunk);
-        check();
-        while (held.size >= ahead && id !== nextWrite) {
-          await new Promise<void>((resolve) => waiters.push(resolve));
-          check();
-        }
-        const result = await executor.run(plan.task(id));
-        check();
-        held.set(id, { result, from: executor });
-        drain();
-      }
+      for (let chunk = 0; chunk < plan.chunks; chunk++) yield plan.seq(run, chunk);
       if (fixed !== undefined) return;
+    }
+  }
+
+  const loop = async (executor: Executor, fixed: number | undefined) => {
+    const ids = tasksOf(fixed);
+    const inFlight: { id: number; result: Promise<TaskResult> }[] = [];
+    let next = ids.next();
+    for (;;) {
+      while (!next.done && inFlight.length < Math.max(1, executor.depth)) {
+        const id = next.value;
+        check();
+        if (held.size >= ahead && id !== nextWrite) {
+          // No room: collect what is under way first, or wait for the writer.
+          if (inFlight.length > 0) break;
+          await new Promise<void>((resolve) => waiters.push(resolve));
+          continue;
+        }
+        const result = executor.run(plan.task(id));
+        // Awaited in turn below; a failure of one not yet awaited must not go unhandled meanwhile.
+        result.catch(() => {});
+        inFlight.push({ id, result });
+        next = ids.next();
+      }
+      const first = inFlight.shift();
+      if (!first) return;
+      const result = await first.result;
+      check();
+      held.set(first.id, { result, from: executor });
+      drain();
     }
   };
 
