@@ -14,8 +14,9 @@ export interface Executor {
   /**
    * Tasks it may be given before the first is done. A worker takes them in
    * order from its queue, so it starts the next at once instead of waiting
-   * for the main thread to answer, which on a busy machine can take longer
-   * than the task; this thread's executor runs one at a time.
+   * for the main thread to answer: on a machine loaded 4× over its cores, a
+   * worker given one task at a time sat idle 7–8 % as long as it worked,
+   * with two 0.2–0.8 %. This thread's executor runs one at a time.
    */
   depth: number;
   /** hands back a result's buffer once written, to be filled again */
