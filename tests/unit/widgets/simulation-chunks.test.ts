@@ -162,6 +162,23 @@ describe('simulator/portable-model', () => {
     expect(copy.hamiltonian!(0.3, b, 0)).toBe(model.hamiltonian!(0.3, a, 0));
   });
 
+  it('a splitting method’s generated stepper travels too; the midpoint rule and the adaptive method, closures of the page, do not', async () => {
+    const H = 'p^2/2 + omega^2*q^2/2 + cos(t)*q';
+    for (const name of ['verlet', 'yoshida4'] as const) {
+      const model = await canonicalEquations({ dof: 1, hamiltonian: H, params: { omega: 3 }, method: { name } });
+      const copy = modelFromPortable(portableModel(model)!, Float64Array.from(model.params));
+      const a = Float64Array.of(1, 0.2);
+      const b = Float64Array.from(a);
+      model.stepper.advance(a, 1, model.params, 0, 0, 1e-3, 5000);
+      copy.stepper.advance(b, 1, copy.params, 0, 0, 1e-3, 5000);
+      expect(Array.from(b)).toEqual(Array.from(a));
+    }
+    const midpoint = await canonicalEquations({ dof: 1, hamiltonian: H, params: { omega: 3 }, method: { name: 'midpoint' } });
+    expect(portableModel(midpoint)).toBeNull();
+    const adaptive = await canonicalEquations({ dof: 1, hamiltonian: H, params: { omega: 3 }, method: { name: 'adaptive', rtol: 1e-9, atol: 1e-12 } });
+    expect(portableModel(adaptive)).toBeNull();
+  });
+
   it('an opaque JS function, a vector field, or code that is not a generated stepper does not travel', async () => {
     const opaque = await canonicalEquations({ dof: 1, hamiltonian: (t: number, x: Float64Array) => { let s = 0; for (const v of x) s += v * v; return s / 2; } });
     expect(opaque.route).toBe('js-stencil');
