@@ -266,7 +266,12 @@ describe('every simulator appears in the box the build reserved for it, at desk 
         for (const { id, height } of reserved) {
           const real = await page.evaluate((id) => {
             const output = document.getElementById(id).querySelector('[data-cell-output]');
-            return output.querySelector('[data-widget="simulator"]') ? output.getBoundingClientRect().height : null;
+            const simulator = output.querySelector('[data-widget="simulator"]');
+            if (!simulator) return null;
+            // A message the widget shows later (behind real time, samples dropped, a blow-up) is news the
+            // reader is meant to see arrive; the reservation is for the widget as it first appears.
+            const messages = [...simulator.querySelectorAll(':scope > .pb-note, :scope > .pb-alert')].reduce((sum, m) => sum + m.getBoundingClientRect().height, 0);
+            return output.getBoundingClientRect().height - messages;
           }, id);
           if (real === null) continue;
           compared++;

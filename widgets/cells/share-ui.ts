@@ -199,7 +199,7 @@ function goToCell(id: string): void {
   const cell = document.querySelector<HTMLElement>(`[data-cell="${CSS.escape(id)}"]`);
   if (!cell) return;
   cell.scrollIntoView({ block: 'center' });
-  cell.querySelector<HTMLElement>('pre.cell-code, .cm-content')?.focus();
+  cell.querySelector<HTMLElement>('pre.cell-code, [contenteditable="true"]')?.focus();
 }
 
 /** Keep: straight away when the reader saved nothing of this chapter, else only after they confirm. */

@@ -81,7 +81,9 @@ export class TimePlot implements View {
       this.renderer.autoscale = false;
       this.renderer.setDomain([lo, hi]);
     }
-    this.legendSlot = el('div', 'pb-legend-slot');
+    // One line that scrolls sideways on a phone (the build reserves one line for it); focusable, so the
+    // keyboard can scroll to its note, which is text, not a button.
+    this.legendSlot = el('div', 'pb-legend-slot', { tabindex: '0', role: 'group', 'aria-label': 'Legend: series shown, and a note' });
     this.logButton = el('button', 'pb-button pb-small', { type: 'button', 'aria-pressed': String(kind === 'symlog'), title: 'Symmetric log scale: 20 ln(1 + |y|) sgn y' }, 'log y');
     const refit = el('button', 'pb-button pb-small', { type: 'button', title: 'Fit the y range to what is shown' }, 'Refit');
     const windows = el('select', 'pb-select', { 'aria-label': 'Time window' });
