@@ -3,8 +3,9 @@
  * trajectories on two worker threads, run on a pseudo-terminal (util-linux's
  * `script`), draws one bar over all the trajectories, redrawn in place, with
  * the count done and the time left, and clears it at the end; with stderr
- * not a terminal it draws nothing. The run is made long enough (1e8 steps)
- * that the bar, which waits a second before it appears, has to show.
+ * not a terminal it draws nothing. The run is made long enough (4e8 steps,
+ * several seconds even on a quiet machine, where the batch stepper takes
+ * ~15 ns a step) that the bar, which waits a second before it appears, has to show.
  */
 import { execFile, spawnSync } from 'node:child_process';
 import { mkdtempSync, readdirSync } from 'node:fs';
@@ -16,7 +17,7 @@ import { ensureCli, ROOT } from '../../bin/cli-bundle.mjs';
 const BIN = join(ROOT, 'bin/phasebook.mjs');
 const HAS_SCRIPT = spawnSync('script', ['--version'], { encoding: 'utf8' }).status === 0;
 const COUNT = 1000;
-/** 1000 trajectories × 1e5 steps: seconds on any machine, so the bar's first second passes. */
+/** 1000 trajectories × tEnd/5e-4 steps. */
 const RUN = (tEnd: number) => ['simulate', '--hamiltonian', 'p^2/2 + q^2/2', '--dof', '1', '--sample', String(COUNT), '--seed', '1', '--box', 'q=-1:1,p=-1:1', '--t-end', String(tEnd), '--every', '1000', '--workers', '2'];
 
 let dir: string;
@@ -38,7 +39,7 @@ function run(file: string, args: string[]): Promise<{ code: number; output: stri
 describe('the progress bar', () => {
   it.skipIf(!HAS_SCRIPT)('on a terminal: one bar over all the trajectories, with the time left, cleared at the end (needs script)', async () => {
     const out = join(dir, 'set.npz');
-    const command = ['node', BIN, ...RUN(50), '--output', out].map(quote).join(' ');
+    const command = ['node', BIN, ...RUN(200), '--output', out].map(quote).join(' ');
     const { code, output } = await run('script', ['-qec', command, '/dev/null']);
     expect(code).toBe(0);
     const frames = [...output.matchAll(/\r([█░]{30}) +(\d+)%  (\d+)\/(\d+) trajectories(?:  ETA ([^\x1b]+))?\x1b\[K/g)];
