@@ -110,14 +110,16 @@ describe('signals', () => {
   it.each([
     ['SIGINT', 130],
     ['SIGTERM', 143],
-  ] as const)('%s stops a long run within a second: status %i, one line on stderr, no output and no partial left', async (signal, status) => {
+  ] as const)('%s stops a long run at once: status %i, one line on stderr, no output and no partial left', async (signal, status) => {
     const exit = await interrupt(LONG, signal);
     expect(exit.signal).toBeNull();
     expect(exit.code).toBe(status);
     expect(oneLine(exit.stderr)).toHaveLength(1);
     expect(exit.stderr).toMatch(new RegExp(`^phasebook: stopped by ${signal} at t = \\S+ of 400000; \\S*out\\.csv was not written\\n$`));
     expect(readdirSync(dir)).toEqual([]);
-    expect(exit.stopMs).toBeLessThan(1000);
+    // The run would take over a minute; it stops in tens of milliseconds on a quiet machine. The bound
+    // is loose so that a busy machine does not fail it: it tells a stop from a run to the end.
+    expect(exit.stopMs).toBeLessThan(5000);
   }, 30_000);
 
   it.each(['npz', 'csv'])('stops a dataset on worker threads (%s): status 130, no partial and no spill file left', async (format) => {
