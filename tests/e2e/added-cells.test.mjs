@@ -49,6 +49,8 @@ test('a reader adds a cell below any cell, runs it, renames it by editing, and d
 
   // Renaming is editing: the reader's second cell follows (and fails, naming the old name).
   await added(page).first().locator('.cell-editor').click();
+  // After the reload the editor loads on this click: type once it has the focus, as a reader sees it appear.
+  await page.waitForFunction(() => document.querySelector('[data-cell-added] .cm-content')?.contains(document.activeElement));
   await page.keyboard.press('ControlOrMeta+A');
   await page.keyboard.insertText('mu = 3');
   await page.keyboard.press('Shift+Enter');
