@@ -70,6 +70,8 @@ async function waitForNewWidget(page, check = 'true', timeout = 20_000) {
     { selector: SIM, check },
     { timeout },
   );
+  // The new widget may have appeared elsewhere (cells above it re-laid out): out of view it would pause.
+  await inView(page);
 }
 
 /** Brings the simulator into view: one out of view pauses until it is seen. */
