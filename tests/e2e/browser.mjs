@@ -70,6 +70,8 @@ export function watchPage(page) {
     // A font declared `font-display: optional` (src/lib/fonts.ts) that misses its moment may be abandoned by
     // the browser: by design, and nothing a reader sees.
     if (request.resourceType() === 'font' && request.failure()?.errorText === 'net::ERR_ABORTED') return;
+    // A worker's script still loading when the page reloads or navigates is abandoned with it.
+    if (/-worker-[\w-]+\.js$/.test(new URL(request.url()).pathname) && request.failure()?.errorText === 'net::ERR_ABORTED') return;
     problems.push(`request failed: ${request.url()} ${request.failure()?.errorText}`);
   });
   page.on('response', (response) => {
