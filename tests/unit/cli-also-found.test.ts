@@ -9,9 +9,10 @@
 import { mkdirSync, mkdtempSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { afterAll, afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
+import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { main } from '../../widgets/cli/main.ts';
 import { parseCSV } from '../../widgets/core/csv.ts';
+import { captureWrites, useScratchCache } from './support/cli-harness.ts';
 
 // The first run of a model compiles it with mathjs; on a busy machine that alone can take seconds.
 vi.setConfig({ testTimeout: 30_000 });
@@ -19,20 +20,11 @@ vi.setConfig({ testTimeout: 30_000 });
 let dir: string;
 let stderr: string[];
 let stdout: string[];
-const userCache = process.env.PHASEBOOK_CACHE_DIR;
-beforeAll(() => {
-  process.env.PHASEBOOK_CACHE_DIR = mkdtempSync(join(tmpdir(), 'phasebook-cache-'));
-});
-afterAll(() => {
-  if (userCache === undefined) delete process.env.PHASEBOOK_CACHE_DIR;
-  else process.env.PHASEBOOK_CACHE_DIR = userCache;
-});
+useScratchCache({ compiledCli: false });
 beforeEach(() => {
   dir = mkdtempSync(join(tmpdir(), 'phasebook-found-'));
-  stderr = [];
-  stdout = [];
-  vi.spyOn(process.stderr, 'write').mockImplementation((chunk) => (stderr.push(String(chunk)), true));
-  vi.spyOn(process.stdout, 'write').mockImplementation((chunk) => (stdout.push(String(chunk)), true));
+  stderr = captureWrites(process.stderr);
+  stdout = captureWrites(process.stdout);
 });
 afterEach(() => vi.restoreAllMocks());
 

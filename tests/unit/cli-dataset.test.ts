@@ -9,12 +9,13 @@ import { execFile, spawnSync } from 'node:child_process';
 import { mkdtempSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { afterAll, afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
-import { ensureCli, ROOT } from '../../bin/cli-bundle.mjs';
+import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
+import { ROOT } from '../../bin/cli-bundle.mjs';
 import { main } from '../../widgets/cli/main.ts';
 import { parseCSV } from '../../widgets/core/csv.ts';
 import { parseJSON } from '../../widgets/core/json.ts';
 import { npzJs, numpyLoad, parquetJs, pyarrowRead, pythonHas, type LoadedArrays, type LoadedTable } from './support/dataset-readers.ts';
+import { captureWrites, useScratchCache } from './support/cli-harness.ts';
 
 const BIN = join(ROOT, 'bin/phasebook.mjs');
 const OSCILLATOR = ['--hamiltonian', 'p^2/2 + q^2/2', '--dof', '1'];
@@ -28,21 +29,11 @@ vi.setConfig({ testTimeout: 30_000 });
 let dir: string;
 let stderr: string[];
 let stdout: string[];
-const userCache = process.env.PHASEBOOK_CACHE_DIR;
-beforeAll(async () => {
-  process.env.PHASEBOOK_CACHE_DIR = mkdtempSync(join(tmpdir(), 'phasebook-cache-'));
-  await ensureCli();
-}, 60_000);
-afterAll(() => {
-  if (userCache === undefined) delete process.env.PHASEBOOK_CACHE_DIR;
-  else process.env.PHASEBOOK_CACHE_DIR = userCache;
-});
+useScratchCache();
 beforeEach(() => {
   dir = mkdtempSync(join(tmpdir(), 'phasebook-dataset-'));
-  stderr = [];
-  stdout = [];
-  vi.spyOn(process.stderr, 'write').mockImplementation((chunk) => (stderr.push(String(chunk)), true));
-  vi.spyOn(process.stdout, 'write').mockImplementation((chunk) => (stdout.push(String(chunk)), true));
+  stderr = captureWrites(process.stderr);
+  stdout = captureWrites(process.stdout);
 });
 afterEach(() => vi.restoreAllMocks());
 

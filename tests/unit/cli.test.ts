@@ -3,13 +3,13 @@ import { existsSync, mkdtempSync, readdirSync, readFileSync, writeFileSync } fro
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { promisify } from 'node:util';
-import { afterAll, afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
-import { ensureCli } from '../../bin/cli-bundle.mjs';
+import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { main } from '../../widgets/cli/main.ts';
 import { canonicalEquations } from '../../widgets/core/canonical-equations.ts';
 import { parseCSV } from '../../widgets/core/csv.ts';
 import { parseJSON } from '../../widgets/core/json.ts';
 import { Simulation } from '../../widgets/core/simulation.ts';
+import { captureWrites, useScratchCache } from './support/cli-harness.ts';
 
 const run = promisify(execFile);
 const BIN = join(import.meta.dirname, '../../bin/phasebook.mjs');
@@ -18,23 +18,10 @@ const NONLINEAR_PARAMS = ['--param', 'omega0=10', '--param', 'alpha=-2', '--para
 
 let dir: string;
 let stderr: string[];
-const userCache = process.env.PHASEBOOK_CACHE_DIR;
-beforeAll(async () => {
-  // Compiled models go to a scratch cache, not the user's; the spawned runs use the compiled CLI, built here if stale.
-  process.env.PHASEBOOK_CACHE_DIR = mkdtempSync(join(tmpdir(), 'phasebook-cache-'));
-  await ensureCli();
-}, 60_000);
-afterAll(() => {
-  if (userCache === undefined) delete process.env.PHASEBOOK_CACHE_DIR;
-  else process.env.PHASEBOOK_CACHE_DIR = userCache;
-});
+useScratchCache();
 beforeEach(() => {
   dir = mkdtempSync(join(tmpdir(), 'phasebook-cli-'));
-  stderr = [];
-  vi.spyOn(process.stderr, 'write').mockImplementation((chunk) => {
-    stderr.push(String(chunk));
-    return true;
-  });
+  stderr = captureWrites(process.stderr);
 });
 afterEach(() => vi.restoreAllMocks());
 

@@ -8,38 +8,22 @@ import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { promisify } from 'node:util';
-import { afterAll, afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
-import { ensureCli } from '../../../bin/cli-bundle.mjs';
+import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { main } from '../../../widgets/cli/main.ts';
 import { parseJSON } from '../../../widgets/core/json.ts';
+import { captureWrites, useScratchCache } from '../support/cli-harness.ts';
 
 const PENDULUM = ['--hamiltonian', 'p^2/2 - cos(q)', '--dof', '1', '--initial', '2,0'];
 
 let dir: string;
 let stderr: string[];
 let stdout: string[];
-const userCache = process.env.PHASEBOOK_CACHE_DIR;
 const BIN = join(import.meta.dirname, '../../../bin/phasebook.mjs');
-beforeAll(async () => {
-  process.env.PHASEBOOK_CACHE_DIR = mkdtempSync(join(tmpdir(), 'phasebook-cache-'));
-  await ensureCli();
-}, 60_000);
-afterAll(() => {
-  if (userCache === undefined) delete process.env.PHASEBOOK_CACHE_DIR;
-  else process.env.PHASEBOOK_CACHE_DIR = userCache;
-});
+useScratchCache();
 beforeEach(() => {
   dir = mkdtempSync(join(tmpdir(), 'phasebook-method-'));
-  stderr = [];
-  stdout = [];
-  vi.spyOn(process.stderr, 'write').mockImplementation((chunk) => {
-    stderr.push(String(chunk));
-    return true;
-  });
-  vi.spyOn(process.stdout, 'write').mockImplementation((chunk) => {
-    stdout.push(String(chunk));
-    return true;
-  });
+  stderr = captureWrites(process.stderr);
+  stdout = captureWrites(process.stdout);
 });
 afterEach(() => vi.restoreAllMocks());
 
