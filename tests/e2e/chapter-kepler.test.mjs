@@ -8,33 +8,10 @@ import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { assertAgrees, assertDrawn, assertLoadsClean, assertNoCellErrors, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
 import { typeIntoCell } from './fixture.mjs';
+// The orbit's elements (Landau & Lifshitz §15), written out once for the e2e suite.
+import { keplerElements as elements } from './sweep-physics.mjs';
 
 const INITIAL = [-3, -3, 3, 3, 2, -3, -2, 3];
-
-/**
- * The relative orbit of two stars of mass 1/2 (μ = 1/4) attracting with −k/r
- * (Landau & Lifshitz §15): E = p²/2μ − k/r, a = −k/2E, T = 2π√(μa³/k), the
- * total angular momentum, and the direction of A = p × L − μk r/r.
- */
-function elements([x1, y1, x2, y2, px1, py1, px2, py2], k) {
-  const mu = 0.25;
-  const rx = x1 - x2;
-  const ry = y1 - y2;
-  const r = Math.hypot(rx, ry);
-  const px = (px1 - px2) / 2;
-  const py = (py1 - py2) / 2;
-  const E = (px * px + py * py) / (2 * mu) - k / r;
-  const a = -k / (2 * E);
-  const l = rx * py - ry * px;
-  const A = [py * l - (mu * k * rx) / r, -px * l - (mu * k * ry) / r];
-  return {
-    E,
-    a,
-    T: 2 * Math.PI * Math.sqrt((mu * a ** 3) / k),
-    L: x1 * py1 - y1 * px1 + x2 * py2 - y2 * px2,
-    angle: Math.atan2(A[1], A[0]),
-  };
-}
 
 /** @type {import('playwright-core').Page} */
 let page;
