@@ -6,49 +6,38 @@
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
 import { after, before, test } from 'node:test';
-import { cellsReady, openChapter, openSite } from './fixture.mjs';
+import { addedCells, cellsReady, openChapter, openSite, typeIntoAddedCell } from './fixture.mjs';
 
 /** @type {Awaited<ReturnType<typeof openSite>>} */
 let site;
 before(async () => (site = await openSite()));
 after(() => site?.close());
 
-const added = (page) => page.locator('[data-cell-added]');
 
-/** Types into the focused editor of the newest added cell and runs it. */
-async function typeAndRun(page, source) {
-  const content = added(page).last().locator('.cm-content');
-  await content.waitFor({ timeout: 10_000 });
-  await content.click();
-  await page.keyboard.press('ControlOrMeta+A');
-  await page.keyboard.insertText(source);
-  await page.keyboard.press('Shift+Enter');
-}
-
-const outputOfLast = (page) => added(page).last().locator('[data-cell-output]').textContent();
+const outputOfLast = (page) => addedCells(page).last().locator('[data-cell-output]').textContent();
 
 test('a reader adds a cell below any cell, runs it, renames it by editing, and deletes it; reloads keep it', async () => {
   const { page, problems } = await openChapter(site, '/adiabatic-invariants/');
   await page.locator('[data-cell="params"] [data-cell-add]').click();
-  assert.equal(await added(page).count(), 1);
+  assert.equal(await addedCells(page).count(), 1);
   // It sits right below the cell it was added to, with the cursor in it.
   assert.equal(await page.evaluate(() => document.querySelector('[data-cell="params"]').nextElementSibling?.hasAttribute('data-cell-added')), true);
   await page.waitForFunction(() => document.querySelector('[data-cell-added] .cm-content')?.contains(document.activeElement));
-  await typeAndRun(page, 'lambda = 2 * params.omega0');
+  await typeIntoAddedCell(page, 'lambda = 2 * params.omega0');
   await page.waitForFunction(() => document.querySelector('[data-cell-added] [data-cell-output]')?.textContent === 'lambda = 8');
 
   // Another cell can read it.
   await page.locator('[data-cell-added] [data-cell-add]').click();
-  await typeAndRun(page, 'twice = lambda * 2');
+  await typeIntoAddedCell(page, 'twice = lambda * 2');
   await page.waitForFunction(() => [...document.querySelectorAll('[data-cell-added] [data-cell-output]')].some((o) => o.textContent === 'twice = 16'));
 
   await page.reload();
   await cellsReady(page);
-  assert.equal(await added(page).count(), 2);
-  assert.deepEqual(await added(page).locator('[data-cell-output]').allTextContents(), ['lambda = 8', 'twice = 16']);
+  assert.equal(await addedCells(page).count(), 2);
+  assert.deepEqual(await addedCells(page).locator('[data-cell-output]').allTextContents(), ['lambda = 8', 'twice = 16']);
 
   // Renaming is editing: the reader's second cell follows (and fails, naming the old name).
-  await added(page).first().locator('.cell-editor').click();
+  await addedCells(page).first().locator('.cell-editor').click();
   // After the reload the editor loads on this click: type once it has the focus, as a reader sees it appear.
   await page.waitForFunction(() => document.querySelector('[data-cell-added] .cm-content')?.contains(document.activeElement));
   await page.keyboard.press('ControlOrMeta+A');
@@ -58,11 +47,11 @@ test('a reader adds a cell below any cell, runs it, renames it by editing, and d
   await page.waitForFunction(() => /lambda is not defined/.test(document.querySelectorAll('[data-cell-added] [data-cell-error]')[1]?.textContent ?? ''));
 
   // Its Reset deletes it, and the deletion is kept.
-  while ((await added(page).count()) > 0) await added(page).first().locator('[data-cell-reset]').click();
-  assert.equal(await added(page).count(), 0);
+  while ((await addedCells(page).count()) > 0) await addedCells(page).first().locator('[data-cell-reset]').click();
+  assert.equal(await addedCells(page).count(), 0);
   await page.reload();
   await cellsReady(page);
-  assert.equal(await added(page).count(), 0);
+  assert.equal(await addedCells(page).count(), 0);
   assert.deepEqual(problems, []);
   await page.close();
 });
@@ -70,9 +59,9 @@ test('a reader adds a cell below any cell, runs it, renames it by editing, and d
 test('a data export records the cells the reader changed or added', async () => {
   const { page, problems } = await openChapter(site, '/playground/');
   await page.locator('[data-cell="params"] [data-cell-add]').click();
-  await typeAndRun(page, 'mine = 42');
+  await typeIntoAddedCell(page, 'mine = 42');
   await page.waitForFunction(() => document.querySelector('[data-cell-added] [data-cell-output]')?.textContent === 'mine = 42');
-  const id = await added(page).first().getAttribute('data-cell');
+  const id = await addedCells(page).first().getAttribute('data-cell');
   await page.waitForSelector('[data-cell="sim"] [data-widget="simulator"][data-ready]');
   const [download] = await Promise.all([
     page.waitForEvent('download'),

@@ -91,3 +91,16 @@ export async function typeIntoCell(page, id, source, { run = 'keys' } = {}) {
   if (run === 'keys') await page.keyboard.press('Shift+Enter');
   if (run === 'button') await root.locator('[data-cell-run]').click();
 }
+
+/** The cells a reader added, in page order. */
+export const addedCells = (page) => page.locator('[data-cell-added]');
+
+/** Types `source` into the newest added cell's editor, replacing what it holds, and runs it. */
+export async function typeIntoAddedCell(page, source) {
+  const content = addedCells(page).last().locator('.cm-content');
+  await content.waitFor({ timeout: 10_000 });
+  await content.click();
+  await page.keyboard.press('ControlOrMeta+A');
+  await page.keyboard.insertText(source);
+  await page.keyboard.press('Shift+Enter');
+}

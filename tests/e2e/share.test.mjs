@@ -10,7 +10,7 @@ import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { after, before, test } from 'node:test';
 import { launchBrowser } from './browser.mjs';
-import { cell, cellsReady, firstViewReady, openChapter, openSite, outputOf, typeIntoCell, waitForOutput, watchPage } from './fixture.mjs';
+import { addedCells, cell, cellsReady, firstViewReady, openChapter, openSite, outputOf, typeIntoAddedCell, typeIntoCell, waitForOutput, watchPage } from './fixture.mjs';
 
 /** @type {Awaited<ReturnType<typeof openSite>>} */
 let site;
@@ -53,18 +53,12 @@ async function axeViolations(page) {
   );
 }
 
-const added = (page) => page.locator('[data-cell-added]');
 const banner = (page) => page.locator('[data-share-banner]');
 
 /** Adds a cell below `anchor`, types `source` into it and runs it. */
 async function addCell(page, anchor, source) {
   await cell(page, anchor).locator('[data-cell-add]').click();
-  const content = added(page).last().locator('.cm-content');
-  await content.waitFor({ timeout: 10_000 });
-  await content.click();
-  await page.keyboard.press('ControlOrMeta+A');
-  await page.keyboard.insertText(source);
-  await page.keyboard.press('Shift+Enter');
+  await typeIntoAddedCell(page, source);
 }
 
 /** Presses Share (by keyboard, as it must work that way) and returns the link shown, after checking its stated length. */
@@ -130,8 +124,8 @@ test('in a fresh profile the link shows the edits, marked, runs none of their co
     assert.equal(await cell(page, id).locator('[data-cell-status]').textContent(), 'not run yet');
     assert.equal(await cell(page, id).locator('.cell-shared-label').textContent(), 'shared');
   }
-  assert.equal(await added(page).count(), 1);
-  assert.equal(await added(page).locator('.cell-editor').textContent(), ADDED);
+  assert.equal(await addedCells(page).count(), 1);
+  assert.equal(await addedCells(page).locator('.cell-editor').textContent(), ADDED);
   assert.equal(await outputOf(page, 'H0'), H0());
   assert.equal(await page.evaluate(() => window.sharedCodeRan), undefined);
   // Nothing of the link is saved in this browser.
@@ -157,7 +151,7 @@ test('in a fresh profile the link shows the edits, marked, runs none of their co
   await cellsReady(page);
   assert.equal(await banner(page).isVisible(), false);
   assert.equal(await page.locator('[data-cell-shared]').count(), 0);
-  assert.equal(await added(page).count(), 0);
+  assert.equal(await addedCells(page).count(), 0);
   assert.equal(await outputOf(page, 'H0'), H0());
   assert.equal(await page.evaluate(() => window.sharedCodeRan), undefined);
   assert.deepEqual(await savedKeys(page), []);
@@ -263,7 +257,7 @@ test('a damaged, cut, foreign or future link shows a clear message over the orig
     if (url.includes('/playground/')) {
       await cellsReady(page);
       assert.equal(await outputOf(page, 'H0'), H0());
-      assert.equal(await added(page).count(), 0);
+      assert.equal(await addedCells(page).count(), 0);
     }
     assert.deepEqual(problems, [], url);
     await page.close();

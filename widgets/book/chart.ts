@@ -107,7 +107,8 @@ export function chart(options: ChartOptions): HTMLElement {
   canvas.setAttribute('aria-label', settled.label);
   canvas.dataset.fontPx = String(AXIS_FONT_PX);
   const description = document.createElement('p');
-  description.className = 'pb-chart-description';
+  // Read by screen readers only; the class that hides it is the plots' (widgets.css).
+  description.className = 'pb-chart-description pb-visually-hidden';
   description.id = `pb-chart-description-${++described}`;
   description.textContent = chartSummary(settled);
   canvas.setAttribute('aria-describedby', description.id);
