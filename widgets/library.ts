@@ -1,21 +1,21 @@
 /**
  * The book's named widgets and helpers, available to every code cell by bare
- * name (e.g. `simulator(...)` in a cell). Add entries here: each value is
- * handed to cells as is — a function stays a function the cell calls.
+ * name (e.g. `simulator(...)` in a cell). Add entries here: each entry is a
+ * loader, and the value it resolves to is handed to cells as is — a function
+ * stays a function the cell calls.
  *
  * widgets/cells/boot.ts passes this catalogue to the cell machinery, over the
  * standard builtins, so an entry here wins over a standard builtin of the
  * same name. A cell that defines the same name wins over both.
  *
- * Every entry is lazy: its module loads when a cell first names it, so a page
- * ships only the widgets its cells use, and none before its cells run. The
+ * Every entry is a loader because the cell machinery calls it only when a
+ * cell first names it: a page ships only the widgets its cells use, and none
+ * before its cells run. The
  * page's context (book/page-data.ts) carries what the build compiled and
  * typeset, so that the entries which build models or typeset math use it
  * instead of loading mathjs or KaTeX.
  */
 import type { PageContext } from './book/page-data.ts';
-import { lazy } from './cells/lazy-builtin.ts';
-import { currentCellSignal } from './cells/runtime.ts';
 import type { BuildOptions } from './core/canonical-equations.ts';
 import { VIEW_MODULES } from './simulator/view-modules.ts';
 
@@ -33,7 +33,15 @@ export function prefetchWidgets(cell: Element): void {
   for (const load of [() => import('./simulator/simulator.ts'), ...views.map((v) => VIEW_MODULES[v])]) load().catch(() => undefined);
 }
 
-export function createLibrary(page: PageContext): Record<string, unknown> {
+/** The catalogue: each name's loader, called once, when a cell first names it. */
+export type Catalogue = Record<string, () => Promise<unknown>>;
+
+/**
+ * `cellSignal` is the cell machinery's signal for the cell whose code is
+ * running, which aborts when that cell is defined again (cells/runtime.ts):
+ * a model build started by a cell stops when an edit makes it obsolete.
+ */
+export function createLibrary(page: PageContext, cellSignal: () => AbortSignal | undefined = () => undefined): Catalogue {
   // The core's modules one by one, not its index: a page then loads only the parts its cells use.
   const spectrum = () => import('./core/spectrum.ts');
   const invariants = () => import('./core/invariants.ts');
@@ -42,7 +50,7 @@ export function createLibrary(page: PageContext): Record<string, unknown> {
   // New models compile in a worker (book/compile-worker.ts), reporting progress; an edit that supersedes the cell cancels its build.
   const build = (): BuildOptions => ({
     store: page.models,
-    signal: currentCellSignal(),
+    signal: cellSignal(),
     progress: (done, total) => document.dispatchEvent(new CustomEvent('phasebook:compiling', { detail: { fraction: done / total } })),
     compile: (spec, control) => import('./book/compile-client.ts').then((m) => m.compileInWorker(spec, control)),
   });
@@ -50,53 +58,52 @@ export function createLibrary(page: PageContext): Record<string, unknown> {
   return {
     // Widgets
     /** simulator({hamiltonian, initial, …}) → Promise of the widget's element */
-    simulator: lazy(() => import('./simulator/simulator.ts').then((m) => (options: Parameters<typeof m.simulator>[0]) => m.simulator(options, build()))),
+    simulator: () => import('./simulator/simulator.ts').then((m) => (options: Parameters<typeof m.simulator>[0]) => m.simulator(options, build())),
     /** Views (each has an `.element`), for composing a simulator by hand */
-    timePlot: lazy(() => import('./plots/time-plot.ts').then((m) => m.timePlot)),
-    trajectoryView: lazy(() => import('./plots/trajectory-view.ts').then((m) => m.trajectoryView)),
-    phasePortrait: lazy(() => import('./plots/phase-portrait.ts').then((m) => m.phasePortrait)),
-    spectrumView: lazy(() => import('./plots/spectrum-view.ts').then((m) => m.spectrumView)),
+    timePlot: () => import('./plots/time-plot.ts').then((m) => m.timePlot),
+    trajectoryView: () => import('./plots/trajectory-view.ts').then((m) => m.trajectoryView),
+    phasePortrait: () => import('./plots/phase-portrait.ts').then((m) => m.phasePortrait),
+    spectrumView: () => import('./plots/spectrum-view.ts').then((m) => m.spectrumView),
     /** theoryCheck({label, measured, predicted, errors: {formula, integration, measurement}, validity, missing, relative, unit, method, formula}) → element */
-    theoryCheck: lazy(() => import('./book/theory-check.ts').then((m) => m.theoryCheck)),
+    theoryCheck: () => import('./book/theory-check.ts').then((m) => m.theoryCheck),
     /** equations(model) → H and Hamilton's equations, typeset */
-    equations: lazy(() => typesetting().then((t) => t.equations)),
+    equations: () => typesetting().then((t) => t.equations),
     /** tex(source, {display}) → typeset LaTeX */
-    tex: lazy(() => typesetting().then((t) => t.tex)),
+    tex: () => typesetting().then((t) => t.tex),
     /** chart({label, x, y, series, rules}) → a figure: points, lines, formula curves and bands on linear or log axes, with legend, data table, PNG and CSV */
-    chart: lazy(() => import('./book/chart.ts').then((m) => m.chart)),
+    chart: () => import('./book/chart.ts').then((m) => m.chart),
     /** table({columns, rows, caption}) → a table of numbers that scrolls on a phone; rows may be a function, read again every `refresh` seconds */
-    table: lazy(() => import('./book/table.ts').then((m) => m.table)),
+    table: () => import('./book/table.ts').then((m) => m.table),
     /** stabilityChart({hamiltonian, params, x, y, frequencyParam, boundaries, onSelect}) → Floquet chart computed in a worker */
-    stabilityChart: lazy(() => import('./book/stability-chart.ts').then((m) => (options: Parameters<typeof m.stabilityChart>[0]) => m.stabilityChart(options, build()))),
+    stabilityChart: () => import('./book/stability-chart.ts').then((m) => (options: Parameters<typeof m.stabilityChart>[0]) => m.stabilityChart(options, build())),
     /** poincareSection({energies, energy, plane, orbits, crossings, onLaunch}) → Hénon–Heiles surface of section computed in a worker; click to launch an orbit */
-    poincareSection: lazy(() => import('./book/poincare-section.ts').then((m) => m.poincareSection)),
+    poincareSection: () => import('./book/poincare-section.ts').then((m) => m.poincareSection),
     /** chaoticShare({energy, plane, grid, time}) → Promise of the section's chaotic share and its errors, computed in a worker */
-    chaoticShare: lazy(() => import('./book/poincare-section.ts').then((m) => m.chaoticShare)),
+    chaoticShare: () => import('./book/poincare-section.ts').then((m) => m.chaoticShare),
     /** henonHeilesFig6: the chaotic share read off Hénon & Heiles (1964) Fig. 6 at E = 1/12, 1/8, 1/6, with its reading error */
-    henonHeilesFig6: lazy(() => import('./core/analysis/poincare-area.ts').then((m) => m.HENON_HEILES_FIG6)),
+    henonHeilesFig6: () => import('./core/analysis/poincare-area.ts').then((m) => m.HENON_HEILES_FIG6),
 
     // The simulation core
     /** canonicalEquations({dof, hamiltonian, params}) → Promise of a Model */
-    canonicalEquations: lazy(() =>
+    canonicalEquations: () =>
       import('./core/canonical-equations.ts').then((m) => (spec: Parameters<typeof m.canonicalEquations>[0]) => m.canonicalEquations(spec, build())),
-    ),
     /** new Simulation(model, {initial, dt, every, derived}): integrate off-screen, e.g. for a theory check */
-    Simulation: lazy(() => import('./book/cell-simulation.ts').then((m) => m.CellSimulation)),
-    spectrum: lazy(() => spectrum().then((m) => m.spectrum)),
-    findPeaks: lazy(() => spectrum().then((m) => m.findPeaks)),
-    relativeDrift: lazy(() => invariants().then((m) => m.relativeDrift)),
-    evaluateAlong: lazy(() => invariants().then((m) => m.evaluateAlong)),
+    Simulation: () => import('./book/cell-simulation.ts').then((m) => m.CellSimulation),
+    spectrum: () => spectrum().then((m) => m.spectrum),
+    findPeaks: () => spectrum().then((m) => m.findPeaks),
+    relativeDrift: () => invariants().then((m) => m.relativeDrift),
+    evaluateAlong: () => invariants().then((m) => m.evaluateAlong),
 
     // Analysis for the chapters' theory checks
-    crossings: lazy(() => analysis().then((m) => m.crossings)),
-    meanPeriod: lazy(() => analysis().then((m) => m.meanPeriod)),
-    floquet: lazy(() => analysis().then((m) => m.floquet)),
+    crossings: () => analysis().then((m) => m.crossings),
+    meanPeriod: () => analysis().then((m) => m.meanPeriod),
+    floquet: () => analysis().then((m) => m.floquet),
     /** peakError(spectrum, lines, line) → how far leakage and refinement can move a spectral peak */
-    peakError: lazy(() => analysis().then((m) => m.peakError)),
-    keplerOrbit: lazy(() => analysis().then((m) => m.keplerOrbit)),
-    rutherfordAngle: lazy(() => analysis().then((m) => m.rutherfordAngle)),
-    deflectionFrom: lazy(() => analysis().then((m) => m.deflectionFrom)),
-    outgoingDirection: lazy(() => analysis().then((m) => m.outgoingDirection)),
-    angleBetween: lazy(() => analysis().then((m) => m.angleBetween)),
+    peakError: () => analysis().then((m) => m.peakError),
+    keplerOrbit: () => analysis().then((m) => m.keplerOrbit),
+    rutherfordAngle: () => analysis().then((m) => m.rutherfordAngle),
+    deflectionFrom: () => analysis().then((m) => m.deflectionFrom),
+    outgoingDirection: () => analysis().then((m) => m.outgoingDirection),
+    angleBetween: () => analysis().then((m) => m.angleBetween),
   };
 }

@@ -1,13 +1,13 @@
 /**
  * The `Simulation` a cell gets: the core's, with a bound on the work it may
- * do in all (simulator/limits.ts). A theory check runs its own simulations
+ * do in all (core/limits.ts). A theory check runs its own simulations
  * from the cells' parameters; with dt = 1e-9 the introduction's checks
  * would have integrated for hours, showing their old verdict meanwhile. Now
  * such a run fails within seconds, saying why, and a check that an edit has
  * made obsolete stops by the same bound.
  */
 import { Simulation } from '../core/simulation.ts';
-import { MAX_CELL_STEPS } from '../simulator/limits.ts';
+import { MAX_CELL_STEPS } from '../core/limits.ts';
 
 export class CellSimulation extends Simulation {
   #taken = 0;

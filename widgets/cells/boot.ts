@@ -23,17 +23,17 @@ import { blockedMessage, cellOfSource, recentCell, stackOf } from './cell-errors
 import type { LiveCell } from './cell.ts';
 import { ChapterCells } from './chapter.ts';
 import { watchScrollables } from './scrollables.ts';
-import { PROVENANCE_EVENT, type ProvenanceRequest } from './provenance.ts';
+import { PROVENANCE_EVENT, type ProvenanceRequest } from '../data/provenance.ts';
 import { MathSnapshot, pageIntact, showPageBroken } from './integrity.ts';
 import { formatError } from './spec.ts';
-import { INPUT_EVENT, type WidgetInput } from './widget-input.ts';
-import { Notebook } from './runtime.ts';
+import { INPUT_EVENT, type WidgetInput } from '../controls/widget-input.ts';
+import { currentCellSignal, Notebook } from './runtime.ts';
 import { CellScheduler } from './schedule.ts';
 import { EditStore } from './storage.ts';
 import { decodeShare, isShareFragment } from './share-format.ts';
 import { planShared, sharedStore, type PageCell } from './share-session.ts';
 import { setUpShareButton, showShareProblem, showSharedBanner, type SharedView } from './share-ui.ts';
-import { CellView } from './view.ts';
+import { CellView } from './cell-view.ts';
 
 function markReady(): void {
   document.body.dataset.cellsReady = '';
@@ -141,7 +141,7 @@ function start(root: HTMLElement, shared: SharedView | null): void {
   const page = pageContext(data, () => {
     document.dispatchEvent(new CustomEvent('phasebook:compiling'));
   });
-  const notebook = new Notebook(createBuiltins(root, createLibrary(page)));
+  const notebook = new Notebook(createBuiltins(root, createLibrary(page, currentCellSignal)));
   const math = new MathSnapshot();
   const scheduler = new CellScheduler(markReady, markComplete, (cell) => prefetchWidgets(cell.root));
   const chapter: ChapterCells = new ChapterCells(root, store, notebook, scheduler, {

@@ -6,9 +6,10 @@
  * quietly resolve to a window property. The book passes its builtins
  * explicitly and makes every other name an error (see runtime.ts).
  *
- * The book's own catalogue (widgets/library.ts) comes from the caller and
- * is spread over the standard builtins. An entry wrapped in `lazy(…)`
- * (lazy-builtin.ts) loads only when a cell first names it.
+ * The book's own catalogue (widgets/library.ts) comes from the caller, as a
+ * loader per name, and is spread over the standard builtins. A loader is
+ * called when a cell first names its entry, and only once: the page fetches
+ * a widget's module only if some cell uses it.
  *
  * `invalidation` needs no entry: the runtime gives each cell a promise that
  * resolves when the cell is redefined or the page disposes it, for stopping
@@ -16,24 +17,33 @@
  */
 import { standardValues } from './globals.ts';
 import { html } from './html.ts';
-import { builtinDefinition } from './lazy-builtin.ts';
 import { observeNow, observeWidth } from './observe.ts';
 
 /** How the runtime wants a builtin: a function it calls for the value. */
 export type BuiltinDefinition = () => unknown;
 
-/** The values a cell sees, before wrapping for the runtime: the standard ones, then `catalogue`'s. */
-export function builtinValues(catalogue: Readonly<Record<string, unknown>>): Record<string, unknown> {
-  return { ...standardValues(), html, ...catalogue };
+/** Names a caller adds to the builtins, each with the loader of its value. */
+export type Loaders = Readonly<Record<string, () => Promise<unknown>>>;
+
+/** The runtime calls a function-valued builtin for its value, so even a plain value is wrapped in one. */
+export function plainDefinition(value: unknown): BuiltinDefinition {
+  return () => value;
+}
+
+/** A definition that calls `load` the first time the runtime asks, and hands every later cell the same promise. */
+export function loadedDefinition(load: () => Promise<unknown>): BuiltinDefinition {
+  let loading: Promise<unknown> | null = null;
+  return () => (loading ??= load());
 }
 
 /**
  * The builtins object for `new Runtime(…)`. `root` is the element whose
  * width the `width` builtin follows (the chapter's text column).
  */
-export function createBuiltins(root: Element, catalogue: Readonly<Record<string, unknown>>): Record<string, BuiltinDefinition> {
+export function createBuiltins(root: Element, catalogue: Loaders): Record<string, BuiltinDefinition> {
   const definitions: Record<string, BuiltinDefinition> = {};
-  for (const [name, value] of Object.entries(builtinValues(catalogue))) definitions[name] = builtinDefinition(value);
+  for (const [name, value] of Object.entries({ ...standardValues(), html })) definitions[name] = plainDefinition(value);
+  for (const [name, load] of Object.entries(catalogue)) definitions[name] = loadedDefinition(load);
   definitions.width = () => observeWidth(root);
   definitions.now = () => observeNow();
   return definitions;

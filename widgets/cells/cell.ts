@@ -19,7 +19,7 @@ import { loadEditor, loadParser } from './lazy.ts';
 import type { CellVariable, Notebook } from './runtime.ts';
 import { formatError, type CellSpec } from './spec.ts';
 import type { EditStore, SavedEdit } from './storage.ts';
-import type { CellView } from './view.ts';
+import type { CellView } from './cell-view.ts';
 
 /** A key that edits text (a character, Enter, Backspace, Delete, Tab), not a shortcut or a move. */
 function isTyping(event: KeyboardEvent): boolean {

@@ -10,7 +10,7 @@ import type { SharedCell } from './share-format.ts';
 import type { Notebook } from './runtime.ts';
 import type { CellScheduler } from './schedule.ts';
 import type { EditStore } from './storage.ts';
-import { CellView } from './view.ts';
+import { CellView } from './cell-view.ts';
 
 /** What the page does for every cell, besides what ChapterCells itself does. */
 export type PageHooks = Omit<CellHooks, 'onFirstResult' | 'onDefine' | 'addCellAfter' | 'deleteCell'>;

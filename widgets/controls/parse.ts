@@ -3,7 +3,7 @@
  * reader and no value, so the control can keep its old value and say why.
  */
 
-import { MAX_DT, MIN_DT } from '../simulator/limits.ts';
+import { MAX_DT, MIN_DT } from '../core/limits.ts';
 
 export type Parsed = { value: number; error?: undefined } | { value?: undefined; error: string };
 
@@ -20,7 +20,7 @@ export function parseNumber(text: string, name: string): Parsed {
   return { value };
 }
 
-/** A time step: a positive number within the book's bounds (simulator/limits.ts). */
+/** A time step: a positive number within the book's bounds (core/limits.ts). */
 export function parseDt(text: string, min = MIN_DT, max = MAX_DT): Parsed {
   const parsed = parseNumber(text, 'dt');
   if (parsed.error !== undefined) return parsed;

@@ -1,4 +1,4 @@
-import { askProvenance } from '../cells/provenance.ts';
+import { askProvenance } from './provenance.ts';
 import { button, field, h, setFieldError } from '../controls/dom.ts';
 import { parseBound } from '../controls/parse.ts';
 import type { Simulation } from '../core/simulation.ts';

@@ -1,5 +1,5 @@
 import type { Simulation } from '../core/simulation.ts';
-import { unseen, type View } from '../simulator/view.ts';
+import { unseen, type View } from './view.ts';
 import type { Mapping } from './axis-scale.ts';
 import { drawAxes, drawLegend, leftMarginFor, MARGIN, panelLabels, type AxisReadout } from './draw-axes.ts';
 import { defaultLook, drawDots, fadeLayer, rescaleImage, strokeRows, type LineStyle } from './plane-draw.ts';

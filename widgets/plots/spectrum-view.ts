@@ -1,6 +1,6 @@
 import type { Peak, Spectrum, WindowName } from '../core/spectrum.ts';
 import type { Simulation } from '../core/simulation.ts';
-import type { View } from '../simulator/view.ts';
+import type { View } from './view.ts';
 import { drawAxes, fontOf, type AxisReadout } from './draw-axes.ts';
 import { PlotTable } from './plot-table.ts';
 import { show, type TableData } from './table-data.ts';

@@ -1,5 +1,5 @@
 import type { Simulation } from '../core/simulation.ts';
-import type { View } from '../simulator/view.ts';
+import type { View } from './view.ts';
 import { pixelRatio } from './canvas.ts';
 import { resolveTheme, watchTheme, type Theme } from './colors.ts';
 import { clampEnd } from './history.ts';

@@ -1,5 +1,5 @@
 import type { Simulation } from '../core/simulation.ts';
-import type { View } from '../simulator/view.ts';
+import type { View } from './view.ts';
 import { axisTitle, batchTitle, defaultBodies, toExtent, tracksOf, type ExtentOption, type Pair } from './plane-columns.ts';
 import type { PanelSpec } from './plane-panels.ts';
 import { PlaneView, type PlaneStyle } from './plane-view.ts';

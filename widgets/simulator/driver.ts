@@ -1,7 +1,7 @@
-import { MAX_SPEED, outside } from './limits.ts';
+import { MAX_SPEED, outside } from '../core/limits.ts';
 import type { Simulation } from '../core/simulation.ts';
 import { carryOver, DEFAULT_BUDGET, integrateFrame, owedSteps, type Budget } from './frame-budget.ts';
-import type { View } from './view.ts';
+import type { View } from '../plots/view.ts';
 import { WorkerIntegrator } from './worker-integrator.ts';
 
 /** Measurements of the last frames, for readouts and tests. */

@@ -6,8 +6,8 @@ import type { Model } from '../core/types.ts';
 import { DataPanel } from '../data/data-panel.ts';
 import { Driver } from './driver.ts';
 import { Notices } from './notices.ts';
-import type { View } from './view.ts';
-import { offerToCell } from '../cells/widget-input.ts';
+import type { View } from '../plots/view.ts';
+import { offerToCell } from '../controls/widget-input.ts';
 
 /** What a simulator element offers scripts: its driver and the current simulation. */
 export interface SimulatorHandle {

@@ -10,9 +10,9 @@ import {
   BATCH_EVERY, checkOptionNames, defaultCapacity, derivedSeries, flattenInitial, modelSpec, oneLine, recordWidth, viewNames,
   type DerivedFunction, type ViewName,
 } from './options.ts';
-import { MAX_BATCH, MAX_DOF, MAX_DT, MAX_SPEED, MIN_DT, outside } from './limits.ts';
+import { MAX_BATCH, MAX_DOF, MAX_DT, MAX_SPEED, MIN_DT, outside } from '../core/limits.ts';
 import { VIEW_MODULES } from './view-modules.ts';
-import type { View } from './view.ts';
+import type { View } from '../plots/view.ts';
 
 export type { SimulatorElement, SimulatorHandle } from './mount.ts';
 

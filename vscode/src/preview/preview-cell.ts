@@ -1,6 +1,6 @@
 /**
  * One cell of the preview, on the book's own parts: its markup and view
- * (widgets/cells/view.ts), compiled by compile.ts, defined in the page's
+ * (widgets/cells/cell-view.ts), compiled by compile.ts, defined in the page's
  * notebook (runtime.ts). Unlike a reader's cell on the page it has no
  * editor and keeps no edits: its code is the chapter's, and a new version
  * of the code (the author typed) redefines the same runtime variable, so
@@ -9,7 +9,7 @@
 import { compileCell } from '../../../widgets/cells/compile.ts';
 import type { CellVariable, Notebook } from '../../../widgets/cells/runtime.ts';
 import { formatError } from '../../../widgets/cells/spec.ts';
-import { CellView } from '../../../widgets/cells/view.ts';
+import { CellView } from '../../../widgets/cells/cell-view.ts';
 import type { CellReport } from '../shared/messages.ts';
 
 type State = CellReport['state'];
