@@ -12,7 +12,7 @@ import { remarkCells, CELL_CODE_LANGUAGE } from './src/lib/remark-cells.mjs';
  *
  * Only modules with no dependency shared with the page's boot code may be
  * listed: Rollup pulls a manual chunk's unassigned dependencies into it, so
- * listing widgets/cells/parse.ts would drag spec.ts (used at boot) into
+ * listing widgets/cells/cell-source.ts would drag spec.ts (used at boot) into
  * `parser` and make every page load it.
  * @param {string} id
  * @returns {string | undefined}

@@ -17,7 +17,7 @@
  * the range (the build this replaced doubled per degree of freedom).
  */
 import { COMPILED_FORMAT, type CompiledModel } from '../widgets/core/compiled-model.ts';
-import { generateCode, hamiltonEquations, parseHamiltonian } from '../widgets/core/expression/compile.ts';
+import { generateCode, hamiltonEquations, parseHamiltonian } from '../widgets/core/expression/compile-expression.ts';
 import { loadMathjs } from '../widgets/core/expression/mathjs.ts';
 import { modelFromCompiled } from '../widgets/core/model-from-compiled.ts';
 import { fpuSource, harmonicSource } from './chains.ts';

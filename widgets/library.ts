@@ -15,8 +15,8 @@
  * typeset, so that the entries which build models or typeset math use it
  * instead of loading mathjs or KaTeX.
  */
+import type { BuildOptions } from './core/index.ts';
 import type { PageContext } from './book/page-data.ts';
-import type { BuildOptions } from './core/canonical-equations.ts';
 import { VIEW_MODULES } from './simulator/view-modules.ts';
 
 /**
@@ -90,7 +90,7 @@ export function createLibrary(page: PageContext, cellSignal: () => AbortSignal |
     /** new Simulation(model, {initial, dt, every, derived}): integrate off-screen, e.g. for a theory check */
     Simulation: () => import('./book/cell-simulation.ts').then((m) => m.CellSimulation),
     spectrum: () => spectrum().then((m) => m.spectrum),
-    findPeaks: () => spectrum().then((m) => m.findPeaks),
+    findPeaks: () => import('./core/peaks.ts').then((m) => m.findPeaks),
     relativeDrift: () => invariants().then((m) => m.relativeDrift),
     evaluateAlong: () => invariants().then((m) => m.evaluateAlong),
 

@@ -6,7 +6,7 @@
  * elsewhere or fetch code to run. What the book itself needs:
  *
  * - `'unsafe-eval'`: cells and the generated steppers are compiled with
- *   `new Function` (widgets/cells/compile.ts, widgets/core/expression/);
+ *   `new Function` (widgets/cells/cell-definition.ts, widgets/core/expression/);
  * - the hashes of the page's own inline scripts (theme, fonts), and no
  *   other inline script;
  * - inline styles (KaTeX's typesetting and the widgets position things

@@ -27,7 +27,7 @@ import { compileModel } from '../../widgets/core/compile-model.ts';
 import type { CompiledModel } from '../../widgets/core/compiled-model.ts';
 import { provideMathjs } from '../../widgets/core/expression/mathjs.ts';
 import { math } from '../../widgets/core/expression/mathjs-instance.ts';
-import { provideAcorn } from '../../widgets/core/js-function/compile.ts';
+import { provideAcorn } from '../../widgets/core/js-function/function-source.ts';
 import type { Model } from '../../widgets/core/types.ts';
 import { memoryStore, PAGE_DATA_FORMAT, type PageData } from '../../widgets/book/page-data.ts';
 import { equationsHtml, equationsLatex, katexOptions, texHtml, typesetKey } from '../../widgets/book/typeset.ts';

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { crossings, meanPeriod } from '../../widgets/core/analysis/crossings.ts';
-import { floquet, stabilityChart } from '../../widgets/core/analysis/floquet.ts';
+import { floquet, floquetGrid } from '../../widgets/core/analysis/floquet.ts';
 import { keplerOrbit } from '../../widgets/core/analysis/kepler.ts';
 import { angleBetween, deflectionFrom, rutherfordAngle } from '../../widgets/core/analysis/scattering.ts';
 import { canonicalEquations } from '../../widgets/core/canonical-equations.ts';
@@ -43,11 +43,11 @@ describe('floquet(model, T, steps)', () => {
     expect(Math.abs(f.growth - s) / s).toBeLessThan(0.1);
   });
 
-  it('stabilityChart(model, grid) finds the instability tongue between γ/ω = 2 ± u/2 to first order in u', async () => {
+  it('floquetGrid(model, grid) finds the instability tongue between γ/ω = 2 ± u/2 to first order in u', async () => {
     const model = await parametric();
     const gammas = Float64Array.from({ length: 41 }, (_, i) => 18 + i * 0.1);
     const us = Float64Array.of(0.1, 0.2, 0.3);
-    const chart = stabilityChart(model, {
+    const chart = floquetGrid(model, {
       x: { param: 'gamma', values: gammas },
       y: { param: 'u', values: us },
       period: (p, names) => (2 * Math.PI) / p[names.indexOf('gamma')],

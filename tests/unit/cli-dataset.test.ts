@@ -13,7 +13,7 @@ import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { ROOT } from '../../bin/cli-bundle.mjs';
 import { main } from '../../widgets/cli/main.ts';
 import { parseCSV } from '../../widgets/core/csv.ts';
-import { parseJSON } from '../../widgets/core/json.ts';
+import { parseJSON } from '../../widgets/core/index.ts';
 import { npzJs, numpyLoad, parquetJs, pyarrowRead, pythonHas, type LoadedArrays, type LoadedTable } from './support/dataset-readers.ts';
 import { captureWrites, useScratchCache } from './support/cli-harness.ts';
 

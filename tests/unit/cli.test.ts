@@ -7,7 +7,7 @@ import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { main } from '../../widgets/cli/main.ts';
 import { canonicalEquations } from '../../widgets/core/canonical-equations.ts';
 import { parseCSV } from '../../widgets/core/csv.ts';
-import { parseJSON } from '../../widgets/core/json.ts';
+import { parseJSON } from '../../widgets/core/index.ts';
 import { Simulation } from '../../widgets/core/simulation.ts';
 import { captureWrites, useScratchCache } from './support/cli-harness.ts';
 

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { csvHeader, csvRows, formatNumber, parseCSV, toCSV } from '../../widgets/core/csv.ts';
-import { jsonHead, jsonRows, jsonTail, parseJSON, toJSON, type ExportMeta } from '../../widgets/core/json.ts';
+import { jsonHead, jsonRows, jsonTail, parseJSON, toJSON, type ExportMeta } from '../../widgets/core/index.ts';
 import { ParseError } from '../../widgets/core/parse-error.ts';
 import { readTable } from '../../widgets/core/read-table.ts';
 import { TrajectoryRecord, type Table } from '../../widgets/core/record.ts';

@@ -7,7 +7,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { peakError } from '../../widgets/core/analysis/leakage.ts';
-import { findPeaks, spectrum } from '../../widgets/core/spectrum.ts';
+import { findPeaks, spectrum } from '../../widgets/core/index.ts';
 
 /** Samples of Σ A cos(2πf t + φ) every `dt` over [0, T). */
 function signal(lines: { A: number; f: number; phase: number }[], dt: number, T: number): Float64Array {

@@ -9,7 +9,7 @@ import { describe, expect, it } from 'vitest';
 import { fpuSource, harmonicSource } from '../../bench/chains.ts';
 import { canonicalEquations } from '../../widgets/core/canonical-equations.ts';
 import { compileModel } from '../../widgets/core/compile-model.ts';
-import { generateCode, hamiltonEquations, parseHamiltonian } from '../../widgets/core/expression/compile.ts';
+import { generateCode, hamiltonEquations, parseHamiltonian } from '../../widgets/core/expression/compile-expression.ts';
 import { loadMathjs } from '../../widgets/core/expression/mathjs.ts';
 import { Partials } from '../../widgets/core/expression/partials.ts';
 

@@ -32,7 +32,6 @@ const COLS = ['t', 'q', 'p', 'H'] as const;
 function expectSameAsModel(rec: TrajectoryRecord, model: ArrayModel): void {
   expect(rec.length).toBe(model.rows.length);
   expect(rec.dropped).toBe(model.dropped);
-  expect(rec.truncated).toBe(model.dropped > 0);
   const flat = model.rows.flat();
   expect(Array.from(rec.table().data)).toEqual(flat);
   for (let i = 0; i < model.rows.length; i++) {
@@ -67,7 +66,7 @@ describe('new TrajectoryRecord(columns, capacity)', () => {
     expect(rec.capacity).toBe(5);
     expect(rec.length).toBe(0);
     expect(rec.dropped).toBe(0);
-    expect(rec.truncated).toBe(false);
+    expect(rec.dropped).toBe(0);
     expect(rec.columnIndex('p')).toBe(2);
     expect(rec.columnIndex('I')).toBe(-1);
   });
@@ -96,11 +95,11 @@ describe('record.push(values, offset?)', () => {
   it('record.push(values) drops the oldest row when full', () => {
     const rec = new TrajectoryRecord(['t', 'x'], 3);
     for (let k = 0; k < 3; k++) rec.push([k, 10 * k]);
-    expect(rec.truncated).toBe(false);
+    expect(rec.dropped).toBe(0);
     rec.push([3, 30]);
     expect(rec.length).toBe(3);
     expect(rec.dropped).toBe(1);
-    expect(rec.truncated).toBe(true);
+    expect(rec.dropped).toBe(1);
     expect(Array.from(rec.column('t'))).toEqual([1, 2, 3]);
     expect(Array.from(rec.column('x'))).toEqual([10, 20, 30]);
   });
@@ -136,38 +135,6 @@ describe('record.push(values, offset?)', () => {
     expect(Object.is(rec.get(0, 0), -0)).toBe(true);
     expect(rec.get(0, 1)).toBe(5e-324);
     expect(Number.isNaN(rec.get(1, 1))).toBe(true);
-  });
-});
-
-describe('record.pushState(t, x, xOffset, dim, derived?)', () => {
-  it('record.pushState(t, x, xOffset, dim, derived) assembles t, a state slice and derived values', () => {
-    const rec = new TrajectoryRecord(['t', 'q0', 'q1', 'p0', 'p1', 'H', 'I'], 4);
-    // three trajectories of dim 4 back to back; record the second
-    const batch = Float64Array.from({ length: 12 }, (_, i) => i + 0.5);
-    rec.pushState(0.1, batch, 4, 4, [7, 8]);
-    expect(Array.from(rec.table().data)).toEqual([0.1, 4.5, 5.5, 6.5, 7.5, 7, 8]);
-  });
-
-  it('record.pushState(t, x, xOffset, dim) works without derived values and wraps like push', () => {
-    const rec = new TrajectoryRecord(['t', 'q', 'p'], 2);
-    const model = new ArrayModel(2);
-    const x = new Float64Array(2);
-    for (let k = 0; k < 7; k++) {
-      x[0] = Math.sin(k);
-      x[1] = Math.cos(k);
-      rec.pushState(k / 10, x, 0, 2);
-      model.push([k / 10, x[0], x[1]]);
-    }
-    expectSameAsModel(rec, model);
-  });
-
-  it('record.pushState(t, x, xOffset, dim, derived) refuses a row that does not fill the columns', () => {
-    const rec = new TrajectoryRecord(['t', 'q', 'p', 'H'], 2);
-    const x = new Float64Array(4);
-    expect(() => rec.pushState(0, x, 0, 2)).toThrow(/do not fill 4 columns/);
-    expect(() => rec.pushState(0, x, 0, 2, [1, 2])).toThrow(/do not fill/);
-    expect(() => rec.pushState(0, x, 3, 2, [1])).toThrow(/outside x/);
-    expect(rec.length).toBe(0);
   });
 });
 
@@ -267,7 +234,7 @@ describe('record.table(from?, to?) / record.slices(from?, to?) / record.clear()'
     rec.clear();
     expect(rec.length).toBe(0);
     expect(rec.dropped).toBe(0);
-    expect(rec.truncated).toBe(false);
+    expect(rec.dropped).toBe(0);
     rec.push([10, 11]);
     expect(Array.from(rec.table().data)).toEqual([10, 11]);
   });

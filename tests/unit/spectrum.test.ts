@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { findPeaks, hamming, spectrum, type WindowName } from '../../widgets/core/spectrum.ts';
+import { findPeaks, hamming, spectrum, type WindowName } from '../../widgets/core/index.ts';
 
 // ---- Independent reference implementations (written from the definitions, not from the code) ----
 

@@ -6,8 +6,7 @@
  * such a run fails within seconds, saying why, and a check that an edit has
  * made obsolete stops by the same bound.
  */
-import { Simulation } from '../core/simulation.ts';
-import { MAX_CELL_STEPS } from '../core/limits.ts';
+import { MAX_CELL_STEPS, Simulation } from '../core/index.ts';
 
 export class CellSimulation extends Simulation {
   #taken = 0;

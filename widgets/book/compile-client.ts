@@ -5,9 +5,7 @@
  * old browser, a policy that forbids it) the model is compiled on the page
  * as before: slower to start, the same result.
  */
-import type { BuildControl } from '../core/build-control.ts';
-import type { CompiledModel, ModelKeySpec } from '../core/compiled-model.ts';
-import { InputError } from '../core/errors.ts';
+import { type BuildControl, type CompiledModel, InputError, type ModelKeySpec } from '../core/index.ts';
 import type { CompileReply, CompileRequest } from './compile-worker.ts';
 
 interface Pending {

@@ -8,8 +8,7 @@
  * In: {id, spec} to build, {cancel: id} to stop a build an edit made
  * obsolete. Out: {id, progress}, then {id, model} or {id, error: {name, message}}.
  */
-import { compileModel } from '../core/compile-model.ts';
-import type { ModelKeySpec } from '../core/compiled-model.ts';
+import { compileModel, type ModelKeySpec } from '../core/index.ts';
 
 export type CompileRequest = { id: number; spec: ModelKeySpec } | { cancel: number };
 export type CompileReply =

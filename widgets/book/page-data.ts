@@ -5,7 +5,7 @@
  * mathjs and KaTeX; anything not in it, such as a reader's new H, is done on
  * the page as before.
  */
-import type { CompiledModel, CompiledModelStore } from '../core/compiled-model.ts';
+import type { CompiledModel, CompiledModelStore } from '../core/index.ts';
 
 /** Only imported as a type here, so the page's boot script carries none of the core. */
 export const PAGE_DATA_FORMAT = 1;

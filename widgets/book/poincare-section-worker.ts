@@ -11,10 +11,7 @@
  * reader's launch is served before the rest of the section; cancelling is
  * terminating the worker.
  */
-import { henonHeiles } from '../core/analysis/henon-heiles.ts';
-import { largestLyapunov } from '../core/analysis/lyapunov.ts';
-import { chaoticArea } from '../core/analysis/poincare-area.ts';
-import { launchState, section, type Plane } from '../core/analysis/poincare.ts';
+import { chaoticArea, henonHeiles, largestLyapunov, launchState, type Plane, section } from '../core/index.ts';
 
 export type SectionRequest =
   | { id: number; kind: 'section'; energy: number; plane: Plane; launches: [number, number][]; crossings: number; dt: number }

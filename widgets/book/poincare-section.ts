@@ -12,10 +12,7 @@
  * data-points (crossings drawn), data-launched (orbits the reader launched),
  * data-exponent (the last launched orbit's λ), data-ready once the section is done.
  */
-import { henonHeiles } from '../core/analysis/henon-heiles.ts';
-import type { ChaoticArea } from '../core/analysis/poincare-area.ts';
-import { sectionBox } from '../core/analysis/poincare-area.ts';
-import { allowed, planeIndices, type Plane } from '../core/analysis/poincare.ts';
+import { allowed, type ChaoticArea, henonHeiles, type Plane, planeIndices, sectionBox } from '../core/index.ts';
 import { makeMapping } from '../plots/axis-scale.ts';
 import { pixelRatio, sizeCanvas } from '../plots/canvas.ts';
 import { drawAxes, MARGIN } from '../plots/draw-axes.ts';

@@ -1,4 +1,4 @@
-import { compiledModelFor, type BuildOptions } from '../core/canonical-equations.ts';
+import { type BuildOptions, compiledModelFor } from '../core/index.ts';
 import { makeMapping } from '../plots/axis-scale.ts';
 import { pixelRatio, sizeCanvas } from '../plots/canvas.ts';
 import { drawAxes, MARGIN } from '../plots/draw-axes.ts';

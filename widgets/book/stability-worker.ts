@@ -3,9 +3,7 @@
  * rates takes a second or more, which would freeze the page it sits in.
  * Messages in: StabilityRequest. Out: {progress} per row, then {rates} or {error}.
  */
-import { stabilityChart } from '../core/analysis/floquet.ts';
-import type { CompiledModel } from '../core/compiled-model.ts';
-import { modelFromCompiled } from '../core/model-from-compiled.ts';
+import { type CompiledModel, floquetGrid, modelFromCompiled } from '../core/index.ts';
 
 export interface StabilityRequest {
   /** compiled on the page (or by the build), so this worker needs no mathjs */
@@ -24,7 +22,7 @@ self.onmessage = (event: MessageEvent<StabilityRequest>) => {
     const model = modelFromCompiled(request.model, request.params);
     const index = model.paramNames.indexOf(request.frequencyParam);
     if (index < 0) throw new Error(`the model has no parameter ${request.frequencyParam}`);
-    const rates = stabilityChart(model, {
+    const rates = floquetGrid(model, {
       x: request.x,
       y: request.y,
       period: (p) => (2 * Math.PI) / p[index],

@@ -3,7 +3,7 @@
  * build already typeset (page-data.ts) is taken from the page's table; only
  * a new one, such as the equations of a reader's own H, loads KaTeX.
  */
-import type { Model } from '../core/types.ts';
+import type { Model } from '../core/index.ts';
 import { equationsHtml, equationsLatex, katexOptions, texHtml, typesetKey } from './typeset.ts';
 
 type Katex = typeof import('katex');

@@ -1,7 +1,7 @@
 /**
  * Finding the cell behind an error that no cell's promise carries: an
  * exception thrown in a cell's timer or event handler, a promise it let
- * fail, a request the page's Content-Security-Policy blocked. compile.ts
+ * fail, a request the page's Content-Security-Policy blocked. cell-definition.ts
  * names each cell's code `cell:<id>` (sourceURL), so its frames in a stack,
  * and a CSP report's source file, say which cell it was.
  */
@@ -13,7 +13,7 @@ const RECENT_MS = 2000;
 
 let lastRun: { id: string; at: number } | null = null;
 
-/** compile.ts calls this each time a cell's code starts running. */
+/** cell-definition.ts calls this each time a cell's code starts running. */
 export function noteCellRun(id: string): void {
   lastRun = { id, at: performance.now() };
 }

@@ -12,7 +12,7 @@
  *   still running when the page last died, or one another tab saved since,
  *   is offered, never applied silently.
  */
-import { compileCell } from './compile.ts';
+import { compileCell } from './cell-definition.ts';
 import { DraftKeeper, type SaveProblem } from './drafts.ts';
 import type { CellEditor } from './editor.ts';
 import { loadEditor, loadParser } from './lazy.ts';

@@ -9,7 +9,7 @@
  * awaited — and simplifies the rest: a generator gives its first value, and
  * nothing re-runs.
  */
-import { compileCell } from './compile.ts';
+import { compileCell } from './cell-definition.ts';
 import type { CellSpec } from './spec.ts';
 
 export interface HeadlessCell {

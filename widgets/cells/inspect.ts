@@ -6,7 +6,7 @@
  * inside another value is named, not listed; an object that carries a
  * one-line summary (core/summary.ts: a model, a simulation) shows that.
  */
-import { SUMMARY } from '../core/summary.ts';
+import { SUMMARY } from '../core/index.ts';
 
 /** Items shown of an array, set or map at the top level (fewer when nested). */
 const MAX_ITEMS = 20;

@@ -7,12 +7,12 @@
  */
 
 let editorModule: Promise<typeof import('./editor.ts')> | null = null;
-let parserModule: Promise<typeof import('./parse.ts')> | null = null;
+let parserModule: Promise<typeof import('./cell-source.ts')> | null = null;
 
 export function loadEditor(): Promise<typeof import('./editor.ts')> {
   return (editorModule ??= import('./editor.ts'));
 }
 
-export function loadParser(): Promise<typeof import('./parse.ts')> {
-  return (parserModule ??= import('./parse.ts'));
+export function loadParser(): Promise<typeof import('./cell-source.ts')> {
+  return (parserModule ??= import('./cell-source.ts'));
 }

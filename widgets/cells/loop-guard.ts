@@ -1,7 +1,7 @@
 /**
  * Stops a runaway loop in a cell before it freezes the page, as CodePen and
  * JS Bin do: every loop in a cell's code starts each iteration with a call
- * to the page's guard (compile.ts puts it there), which breaks the loop once
+ * to the page's guard (cell-definition.ts puts it there), which breaks the loop once
  * the synchronous run it is part of has lasted LOOP_LIMIT_MS.
  *
  * A "run" is one uninterrupted stretch of JavaScript: it ends when control

@@ -4,7 +4,7 @@
  */
 import { Runtime, RuntimeError, type Module, type Observer, type Variable } from '@observablehq/runtime';
 import type { BuiltinDefinition } from './builtins.ts';
-import type { CellDefinition } from './compile.ts';
+import type { CellDefinition } from './cell-definition.ts';
 import { formatError, type CellSpec } from './spec.ts';
 
 export type { Observer as CellObserver, Variable as CellVariable };

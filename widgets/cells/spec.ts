@@ -1,6 +1,6 @@
 /**
  * The shape of a parsed cell, shared by the build (src/lib/remark-cells.mjs,
- * which parses the chapter's cells once) and the browser (parse.ts, which
+ * which parses the chapter's cells once) and the browser (cell-source.ts, which
  * parses a reader's edit). Keeping one description means the page can compile
  * the author's cells without shipping the parser.
  */
@@ -19,7 +19,7 @@ export interface CellSpec {
   readonly block: boolean;
   /**
    * The bodies of the loops in the cell, as source offsets [start, end) and
-   * whether each is a `{ … }` block: compile.ts starts each iteration with
+   * whether each is a `{ … }` block: cell-definition.ts starts each iteration with
    * the page's loop guard (loop-guard.ts). Absent in specs of older builds.
    */
   readonly loops?: readonly (readonly [number, number, boolean])[];

@@ -1,4 +1,4 @@
-import { InputError } from '../core/errors.ts';
+import { InputError } from '../core/index.ts';
 
 /** How an option is read: a flag takes no value, a list option may repeat. */
 export interface OptionSpec {

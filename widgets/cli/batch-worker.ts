@@ -5,7 +5,7 @@
  * rather than copied.
  */
 import { parentPort, workerData } from 'node:worker_threads';
-import { BlowUpError, InputError } from '../core/errors.ts';
+import { BlowUpError, InputError } from '../core/index.ts';
 import { modelFromRecipe, type ModelRecipe } from './model.ts';
 import { TaskRunner, type Task, type TaskSetup } from './dataset-task.ts';
 

@@ -4,8 +4,7 @@
  * in worker threads, one task at a time each.
  */
 import { Worker } from 'node:worker_threads';
-import { BlowUpError, InputError } from '../core/errors.ts';
-import type { Model } from '../core/types.ts';
+import { BlowUpError, InputError, type Model } from '../core/index.ts';
 import type { WorkerError, WorkerInit } from './batch-worker.ts';
 import { TaskRunner, type Task, type TaskResult, type TaskSetup } from './dataset-task.ts';
 

@@ -8,11 +8,7 @@
  * the machine, the time or the number of workers: the same run writes the
  * same meta.
  */
-import { methodMeta } from '../core/export-meta.ts';
-import { methodChoice } from '../core/integrators/methods.ts';
-import type { ExportMeta } from '../core/json.ts';
-import type { Model } from '../core/types.ts';
-import { VERSION } from '../core/version.ts';
+import { type ExportMeta, methodChoice, methodMeta, type Model, VERSION } from '../core/index.ts';
 import type { RunSpec, SetSpec } from './run-spec.ts';
 
 export interface DatasetMeta extends ExportMeta {

@@ -4,12 +4,7 @@
  * (or here, for a small run) and handed to a writer in its order.
  */
 import { availableParallelism } from 'node:os';
-import { rowColumns } from '../core/dataset/batch-run.ts';
-import type { Axis, Range } from '../core/dataset/box.ts';
-import { fillInitial, trajectoryCount, type InitialSet } from '../core/dataset/initial-set.ts';
-import { stepsTo } from '../core/dataset/sample-times.ts';
-import { InputError } from '../core/errors.ts';
-import type { Model } from '../core/types.ts';
+import { type Axis, fillInitial, type InitialSet, InputError, type Model, type Range, rowColumns, stepsTo, trajectoryCount } from '../core/index.ts';
 import { datasetMeta, type DatasetMeta } from './dataset-meta.ts';
 import { localExecutor, workerExecutor, type Executor } from './dataset-executors.ts';
 import { BLOCK_VALUES, planTasks, TEXT_BLOCK_VALUES } from './dataset-plan.ts';

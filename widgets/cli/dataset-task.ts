@@ -5,10 +5,7 @@
  * sample, a chunk of rows at a time), returned as numbers or, for a text
  * format, as the formatted rows.
  */
-import { BatchRun } from '../core/dataset/batch-run.ts';
-import { fillInitial, type InitialSet } from '../core/dataset/initial-set.ts';
-import { everyKSteps, listedTimes, type SampleTimes } from '../core/dataset/sample-times.ts';
-import type { Model } from '../core/types.ts';
+import { BatchRun, everyKSteps, fillInitial, type InitialSet, listedTimes, type Model, type SampleTimes } from '../core/index.ts';
 import { formatRows, textCapacity, type TextFormat } from './formats/text-rows.ts';
 
 /** How sample times are made, as data a worker can receive. */

@@ -10,7 +10,7 @@
  */
 import { readFileSync } from 'node:fs';
 import { basename } from 'node:path';
-import { InputError } from '../core/errors.ts';
+import { InputError } from '../core/index.ts';
 import { numericDtype, parseNpyHeader } from './formats/npy.ts';
 import { resolveName } from './ranges.ts';
 

@@ -5,9 +5,7 @@
  * function given as --hamiltonian. Built by `new Function` alone, without a
  * parser, so that a vector-field run loads neither acorn nor mathjs.
  */
-import { InputError } from '../core/errors.ts';
-import { checkName } from '../core/expression/names.ts';
-import { isFunctionSource, MATH_NAMES } from '../core/js-function/compile.ts';
+import { checkName, InputError, isFunctionSource, MATH_NAMES } from '../core/index.ts';
 
 /**
  * The function `source` evaluates to. `option` names the command-line option

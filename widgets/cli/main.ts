@@ -1,10 +1,9 @@
-import { BlowUpError, InputError } from '../core/errors.ts';
-import { VERSION } from '../core/version.ts';
+import { BlowUpError, InputError, VERSION } from '../core/index.ts';
 import { Interrupted } from './interrupt.ts';
 import { OutputError } from './output-error.ts';
 import { byteSize, count, OUTPUT_LIMIT, STEP_LIMIT } from './run-size.ts';
 import { SIMULATE_USAGE, simulate } from './simulate.ts';
-import { SPECTRUM_USAGE, spectrumCommand } from './spectrum.ts';
+import { SPECTRUM_USAGE, spectrumCommand } from './spectrum-command.ts';
 import { MERGE_USAGE, mergeCommand } from './merge.ts';
 import { REPRODUCE_USAGE, reproduceCommand } from './reproduce.ts';
 

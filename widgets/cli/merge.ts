@@ -4,7 +4,7 @@
  * byte for byte. The shards must all be there, once each, and come from one
  * spec: their metas must agree in everything but the shard.
  */
-import { InputError } from '../core/errors.ts';
+import { InputError } from '../core/index.ts';
 import { BLOCK_VALUES } from './dataset-plan.ts';
 import { unshardedMeta, type DatasetMeta } from './dataset-meta.ts';
 import type { DatasetShape, DatasetWriter } from './formats/dataset-shape.ts';

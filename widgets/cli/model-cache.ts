@@ -15,7 +15,7 @@ import { createHash, randomBytes } from 'node:crypto';
 import { mkdirSync, readFileSync, renameSync, rmSync, writeFileSync } from 'node:fs';
 import { homedir } from 'node:os';
 import { isAbsolute, join } from 'node:path';
-import type { CompiledModel, CompiledModelStore } from '../core/compiled-model.ts';
+import type { CompiledModel, CompiledModelStore } from '../core/index.ts';
 
 const sha256 = (text: string) => createHash('sha256').update(text).digest('hex');
 

@@ -9,15 +9,7 @@
  * its model from the same recipe, so all run the same generated code: the
  * numbers are the same whichever thread computes a trajectory.
  */
-import { compiledModelFor } from '../core/canonical-equations.ts';
-import { canonicalEquations } from '../core/canonical-equations.ts';
-import type { CompiledModel } from '../core/compiled-model.ts';
-import { InputError } from '../core/errors.ts';
-import { DEFAULT_METHOD, type MethodChoice } from '../core/integrators/methods.ts';
-import { isFunctionSource } from '../core/js-function/compile.ts';
-import type { OpaqueHamiltonian } from '../core/js-function/stencil.ts';
-import { modelFromCompiled } from '../core/model-from-compiled.ts';
-import type { Model, Stepper, VectorField } from '../core/types.ts';
+import { canonicalEquations, type CompiledModel, compiledModelFor, DEFAULT_METHOD, InputError, isFunctionSource, type MethodChoice, type Model, modelFromCompiled, type OpaqueHamiltonian, type Stepper, type VectorField } from '../core/index.ts';
 import { functionFromArgument } from './js-source.ts';
 import { diskModelStore, modelCacheDirectory } from './model-cache.ts';
 

@@ -9,7 +9,7 @@
  * A return to the event loop costs a few microseconds, at most fifty times a
  * second: nothing measurable.
  */
-import type { Simulation } from '../core/simulation.ts';
+import type { Simulation } from '../core/index.ts';
 
 /** Aimed-at duration of one synchronous call to Simulation.run. */
 const STRETCH_MS = 20;

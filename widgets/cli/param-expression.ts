@@ -6,7 +6,7 @@
  * A few dozen lines of recursive descent, so that reading a parameter never
  * loads mathjs.
  */
-import { InputError } from '../core/errors.ts';
+import { InputError } from '../core/index.ts';
 
 const CONSTANTS: Record<string, number> = { pi: Math.PI, PI: Math.PI, e: Math.E, E: Math.E, tau: 2 * Math.PI };
 const FUNCTIONS: Record<string, (...args: number[]) => number> = {

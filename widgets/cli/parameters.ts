@@ -3,8 +3,7 @@
  * and the parameters given before it (param-expression.ts). Names are those
  * a generated stepper can use: ASCII letters, digits and _.
  */
-import { InputError } from '../core/errors.ts';
-import { checkName } from '../core/expression/names.ts';
+import { checkName, InputError } from '../core/index.ts';
 import { evaluateParameter } from './param-expression.ts';
 
 export interface Parameters {

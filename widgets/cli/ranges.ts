@@ -3,7 +3,7 @@
  * axis) for every component of the state, by name. A bare value holds the
  * component fixed. Bounds may be arithmetic with the parameters (`q=-pi:pi`).
  */
-import { InputError } from '../core/errors.ts';
+import { InputError } from '../core/index.ts';
 import { evaluateParameter } from './param-expression.ts';
 import { wholeNumber } from './args.ts';
 

@@ -4,7 +4,7 @@
  * compares every number with FILE's, bit for bit. Prints what it found;
  * the status is 0 when every number is the same, 1 when one differs.
  */
-import { InputError } from '../core/errors.ts';
+import { InputError } from '../core/index.ts';
 import { BLOCK_VALUES } from './dataset-plan.ts';
 import { specFromMeta } from './dataset-meta.ts';
 import { executeRun, prepareRun } from './dataset-run.ts';

@@ -4,7 +4,7 @@
  * zeros too many) otherwise means hours of computing or a disk filled with
  * gigabytes nobody wanted; a run that large on purpose costs one flag.
  */
-import { InputError } from '../core/errors.ts';
+import { InputError } from '../core/index.ts';
 
 /** About twenty seconds of a one-degree-of-freedom model at the fused stepper's ~50 million steps a second, minutes for larger ones. */
 export const STEP_LIMIT = 1e9;

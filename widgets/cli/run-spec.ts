@@ -3,7 +3,7 @@
  * what the command line says, what a file's meta says to reproduce it, and
  * what shards must share to be merged.
  */
-import type { MethodChoice } from '../core/integrators/methods.ts';
+import type { MethodChoice } from '../core/index.ts';
 import type { ParquetLayout } from './formats/parquet-dataset.ts';
 
 export type Format = 'csv' | 'json' | 'npz' | 'parquet';

@@ -4,11 +4,7 @@
  * JSON, NPZ or Parquet, on every core, or one shard of it.
  */
 import { basename, extname } from 'node:path';
-import { InputError } from '../core/errors.ts';
-import { stateNames } from '../core/expression/names.ts';
-import { MAX_SEED } from '../core/dataset/philox.ts';
-import { methodChoice } from '../core/integrators/methods.ts';
-import { DEFAULT_DT } from '../core/simulation.ts';
+import { DEFAULT_DT, InputError, MAX_SEED, methodChoice, stateNames } from '../core/index.ts';
 import { number, numberList, parseArgs, positive, wholeNumber } from './args.ts';
 import { executeRun, prepareRun, type PreparedRun } from './dataset-run.ts';
 import { datasetWriter } from './dataset-writer.ts';

@@ -1,4 +1,4 @@
-import type { TrajectoryRecord } from '../core/record.ts';
+import { relativeChange, type TrajectoryRecord } from '../core/index.ts';
 
 /**
  * The energy drift |H − H₀| / |H₀| of the readouts. H₀ is taken from the
@@ -13,12 +13,6 @@ export function energyColumns(columns: readonly string[]): number[] {
     if (name === 'H' || /^H\[\d+\]$/.test(name)) out.push(c);
   });
   return out;
-}
-
-/** |h − h0| / |h0|, or |h − h0| when h0 = 0 (where a ratio means nothing). */
-export function relativeChange(h: number, h0: number): number {
-  const change = Math.abs(h - h0);
-  return h0 === 0 ? change : change / Math.abs(h0);
 }
 
 /** Tracks the drift of every H column against its value at the start. */

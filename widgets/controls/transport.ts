@@ -1,6 +1,6 @@
 import { button, field, h, relabel, setFieldError } from './dom.ts';
 import { formatRate, formatSpeed } from './format.ts';
-import { parseDt } from './parse.ts';
+import { parseDt } from './field-values.ts';
 
 /** What the transport controls ask of a running simulation. */
 export interface TransportActions {

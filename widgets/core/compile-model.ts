@@ -6,9 +6,9 @@
 import { throwIfAborted, type BuildControl } from './build-control.ts';
 import { codeMethodOf, COMPILED_FORMAT, hamiltonianSource, modelKey, type CompiledModel, type ModelKeySpec } from './compiled-model.ts';
 import { InputError } from './errors.ts';
-import { compileExpression } from './expression/compile.ts';
+import { compileExpression } from './expression/compile-expression.ts';
 import { stateNames } from './expression/names.ts';
-import { functionFromSource, isFunctionSource, parseFunction } from './js-function/compile.ts';
+import { functionFromSource, isFunctionSource, parseFunction } from './js-function/function-source.ts';
 import { translateFunction } from './js-function/translate.ts';
 
 /**

@@ -1,7 +1,33 @@
 import type { MethodChoice } from './integrators/methods.ts';
-import type { ExportMeta } from './json.ts';
 import type { Simulation } from './simulation.ts';
 import { VERSION } from './version.ts';
+
+/** What an export says about how its numbers came about. */
+export interface ExportMeta {
+  /** Source of H (expression or function text). */
+  hamiltonian: string;
+  params: Record<string, number>;
+  dof: number;
+  dt: number;
+  method: string;
+  /** the adaptive method's tolerances */
+  rtol?: number;
+  atol?: number;
+  /** Steps between samples. */
+  every: number;
+  t0: number;
+  initial: number[];
+  route?: string;
+  names?: string[];
+  derived?: string[];
+  count?: number;
+  version: string;
+  /** Rows lost to the record's capacity before the export began. */
+  dropped?: number;
+  /** Exports from the book: the cells the reader had changed or added on the page, and their code. */
+  provenance?: { page: string; cells: readonly { cell: string; source: string; added: boolean }[] };
+  [key: string]: unknown;
+}
 
 /** The default integration method: the classical Runge–Kutta 3/8 rule, as in the paper. */
 export const METHOD = 'rk38';

@@ -1,14 +1,58 @@
-/** The simulation core: DOM-free, shared by the widgets, the CLI and the tests. */
-export { canonicalEquations, type HamiltonianSpec, type BuildOptions } from './canonical-equations.ts';
+/**
+ * The simulation core: DOM-free, shared by the widgets, the CLI and the tests.
+ *
+ * This is its one front door: code in widgets/ and the VS Code extension
+ * imports the core from here, never a module inside it, so the core can
+ * rearrange its modules without its clients noticing. Two kinds of import
+ * name a module directly, on purpose:
+ * - a dynamic `import()` of a part loaded on demand (the catalogue's lazy
+ *   entries, the compile worker), so that the bundler splits that part off
+ *   and a page fetches only what its cells use;
+ * - tests and benchmarks, which exercise and time the parts one by one, and
+ *   the build's precompiler, which hands mathjs over statically.
+ *
+ * Every module re-exported here is free of side effects at load, so a
+ * bundle keeps only what its importer uses.
+ */
+export { crossings, meanPeriod } from './analysis/crossings.ts';
+export { floquet, floquetGrid } from './analysis/floquet.ts';
+export { henonHeiles } from './analysis/henon-heiles.ts';
+export { keplerOrbit } from './analysis/kepler.ts';
+export { peakError } from './analysis/leakage.ts';
+export { largestLyapunov } from './analysis/lyapunov.ts';
+export { chaoticArea, type ChaoticArea, sectionBox } from './analysis/poincare-area.ts';
+export { allowed, launchState, type Plane, planeIndices, section } from './analysis/poincare.ts';
+export { angleBetween, deflectionFrom, outgoingDirection, rutherfordAngle } from './analysis/scattering.ts';
 export { abortError, type BuildControl } from './build-control.ts';
-export { rk38 } from './rk38.ts';
-export { Simulation, DEFAULT_DT, type DerivedSeries, type SimulationOptions } from './simulation.ts';
-export { TrajectoryRecord, capacityFor, bytesFor, type Table } from './record.ts';
-export { csvHeader, csvRows, toCSV, parseCSV } from './csv.ts';
-export { jsonHead, jsonRows, jsonTail, toJSON, parseJSON, type ExportMeta } from './json.ts';
+export { type BuildOptions, canonicalEquations, compiledModelFor, type HamiltonianSpec } from './canonical-equations.ts';
+export { bytesFor, capacityFor } from './capacity.ts';
+export { compileModel } from './compile-model.ts';
+export { type CompiledModel, type CompiledModelStore, type ModelKeySpec } from './compiled-model.ts';
+export { csvHeader, csvRows, formatNumber, parseCSV, toCSV } from './csv.ts';
+export { BatchRun, rowColumns } from './dataset/batch-run.ts';
+export { type Axis, type Range } from './dataset/box.ts';
+export { fillInitial, type InitialSet, trajectoryCount } from './dataset/initial-set.ts';
+export { MAX_SEED } from './dataset/philox.ts';
+export { everyKSteps, listedTimes, type SampleTimes, stepsTo } from './dataset/sample-times.ts';
+export { BlowUpError, InputError } from './errors.ts';
+export { type ExportMeta, methodMeta } from './export-meta.ts';
+export { checkName, stateNames } from './expression/names.ts';
+export { DEFAULT_METHOD, methodChoice, type MethodChoice } from './integrators/methods.ts';
+export { evaluateAlong, relativeChange, relativeDrift, type StateFunction } from './invariants.ts';
+export { isFunctionSource, MATH_NAMES } from './js-function/function-source.ts';
+export { type OpaqueHamiltonian } from './js-function/stencil.ts';
+export { parseJSON } from './json-read.ts';
+export { jsonHead, jsonNumber, jsonRows, jsonTail, toJSON } from './json.ts';
+export { MAX_BATCH, MAX_CELL_STEPS, MAX_DOF, MAX_DT, MAX_SPEED, MIN_DT, outside } from './limits.ts';
+export { modelFromCompiled } from './model-from-compiled.ts';
+export { findPeaks, type Peak } from './peaks.ts';
 export { readTable } from './read-table.ts';
-export { spectrum, findPeaks, hamming, type Spectrum, type Peak, type WindowName } from './spectrum.ts';
-export { evaluateAlong, relativeDrift, type StateFunction } from './invariants.ts';
-export { InputError, BlowUpError } from './errors.ts';
+export { TrajectoryRecord } from './record.ts';
+export { rk38 } from './rk38.ts';
+export { DEFAULT_DT, type DerivedSeries, Simulation, type SimulationOptions } from './simulation.ts';
+export { spectrum, type Spectrum } from './spectrum.ts';
+export { SUMMARY } from './summary.ts';
+export { type Table } from './table.ts';
+export { type HamiltonianFunction, type Model, type Route, type Stepper, type VectorField } from './types.ts';
 export { VERSION } from './version.ts';
-export type { Model, Route, Stepper, VectorField, HamiltonianFunction } from './types.ts';
+export { checkWindowName, hamming, type WindowName } from './window.ts';

@@ -20,10 +20,13 @@ export function evaluateAlong(table: Table, f: StateFunction, out = new Float64A
  * nothing).
  */
 export function relativeDrift(values: ArrayLike<number>, from = 0, to = values.length): number {
-  if (to - from < 1) return 0;
-  const first = values[from];
-  const scale = first === 0 ? 1 : Math.abs(first);
   let worst = 0;
-  for (let i = from; i < to; i++) worst = Math.max(worst, Math.abs(values[i] - first));
-  return worst / scale;
+  for (let i = from; i < to; i++) worst = Math.max(worst, relativeChange(values[i], values[from]));
+  return worst;
+}
+
+/** |h − h0| / |h0|, or |h − h0| when h0 = 0 (where a ratio means nothing). */
+export function relativeChange(h: number, h0: number): number {
+  const change = Math.abs(h - h0);
+  return h0 === 0 ? change : change / Math.abs(h0);
 }

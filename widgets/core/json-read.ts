@@ -1,4 +1,4 @@
-import type { ExportMeta } from './json.ts';
+import type { ExportMeta } from './export-meta.ts';
 import { JsonCursor, type JsonValue } from './json-scan.ts';
 import { ParseError } from './parse-error.ts';
 import { columnProblem, type Table } from './table.ts';

@@ -1,7 +1,6 @@
 import { formatNumber } from './csv.ts';
+import type { ExportMeta } from './export-meta.ts';
 import { columnProblem, type Table } from './table.ts';
-
-export { parseJSON } from './json-read.ts';
 
 /**
  * JSON export of sampled trajectories: `{"meta": …, "columns": […], "data": [[…], …]}`
@@ -16,33 +15,6 @@ export { parseJSON } from './json-read.ts';
  * `meta` goes through JSON.stringify as is, so non-finite numbers in it
  * become null and -0 becomes 0.
  */
-
-/** What an export says about how its numbers came about. */
-export interface ExportMeta {
-  /** Source of H (expression or function text). */
-  hamiltonian: string;
-  params: Record<string, number>;
-  dof: number;
-  dt: number;
-  method: string;
-  /** the adaptive method's tolerances */
-  rtol?: number;
-  atol?: number;
-  /** Steps between samples. */
-  every: number;
-  t0: number;
-  initial: number[];
-  route?: string;
-  names?: string[];
-  derived?: string[];
-  count?: number;
-  version: string;
-  /** Rows lost to the record's capacity before the export began. */
-  dropped?: number;
-  /** Exports from the book: the cells the reader had changed or added on the page, and their code. */
-  provenance?: { page: string; cells: readonly { cell: string; source: string; added: boolean }[] };
-  [key: string]: unknown;
-}
 
 /** One data value as written in a JSON export. */
 export function jsonNumber(x: number): string {

@@ -7,7 +7,7 @@ import { InputError } from './errors.ts';
 import { applyMethod } from './integrators/apply.ts';
 import { DEFAULT_METHOD, type MethodChoice } from './integrators/methods.ts';
 import type { JacobianFunction } from './integrators/midpoint.ts';
-import { functionFromSource } from './js-function/compile.ts';
+import { functionFromSource } from './js-function/function-source.ts';
 import { stencilField, type OpaqueHamiltonian } from './js-function/stencil.ts';
 import { rk38 } from './rk38.ts';
 import { withSummary } from './summary.ts';

@@ -1,5 +1,6 @@
 import { parseCSV } from './csv.ts';
-import { parseJSON, type ExportMeta } from './json.ts';
+import type { ExportMeta } from './export-meta.ts';
+import { parseJSON } from './json-read.ts';
 import { ParseError } from './parse-error.ts';
 import type { Table } from './table.ts';
 

@@ -45,10 +45,6 @@ export class TrajectoryRecord {
     return this.count;
   }
 
-  get truncated(): boolean {
-    return this.dropped > 0;
-  }
-
   /** Claims the slot for a new row, evicting the oldest when full; returns its buffer offset. */
   private claim(): number {
     if (this.count < this.capacity) return this.slot(this.count++);
@@ -71,25 +67,6 @@ export class TrajectoryRecord {
     }
     const at = this.claim();
     for (let j = 0; j < w; j++) this.buf[at + j] = values[offset + j];
-  }
-
-  /**
-   * Records straight out of a (possibly batched) state array, so the sampler
-   * never assembles a temporary row.
-   */
-  pushState(t: number, x: Float64Array, xOffset: number, dim: number, derived?: ArrayLike<number>): void {
-    const nd = derived === undefined ? 0 : derived.length;
-    if (1 + dim + nd !== this.width) {
-      throw new RangeError(`TrajectoryRecord.pushState: 1 + ${dim} + ${nd} values do not fill ${this.width} columns`);
-    }
-    if (!(xOffset >= 0) || xOffset + dim > x.length) {
-      throw new RangeError(`TrajectoryRecord.pushState: state slice [${xOffset}, ${xOffset + dim}) is outside x`);
-    }
-    const at = this.claim();
-    const buf = this.buf;
-    buf[at] = t;
-    for (let j = 0; j < dim; j++) buf[at + 1 + j] = x[xOffset + j];
-    for (let j = 0; j < nd; j++) buf[at + 1 + dim + j] = (derived as ArrayLike<number>)[j];
   }
 
   time(i: number): number {

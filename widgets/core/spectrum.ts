@@ -14,8 +14,6 @@
 import FFT from 'fft.js';
 import { checkWindowName, windowedDeviation, type WindowName } from './window.ts';
 
-export { hamming, type WindowName } from './window.ts';
-export { findPeaks, type Peak, type PeakOptions } from './peaks.ts';
 
 export interface SpectrumOptions {
   /** Default 'hamming' (the paper's choice). */

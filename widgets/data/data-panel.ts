@@ -1,7 +1,7 @@
+import type { Simulation } from '../core/index.ts';
 import { askProvenance } from './provenance.ts';
 import { button, field, h, setFieldError } from '../controls/dom.ts';
-import { parseBound } from '../controls/parse.ts';
-import type { Simulation } from '../core/simulation.ts';
+import { parseBound } from '../controls/field-values.ts';
 import { resolveTheme } from '../plots/colors.ts';
 import { exportName, selectRows, type Selection } from './interval.ts';
 

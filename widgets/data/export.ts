@@ -1,6 +1,4 @@
-import { csvHeader, csvRows } from '../core/csv.ts';
-import { jsonHead, jsonRows, jsonTail, type ExportMeta } from '../core/json.ts';
-import type { TrajectoryRecord } from '../core/record.ts';
+import { csvHeader, csvRows, type ExportMeta, jsonHead, jsonRows, jsonTail, type TrajectoryRecord } from '../core/index.ts';
 
 /**
  * Exports of record rows [from, to) in the CLI's formats, built with the

@@ -1,4 +1,4 @@
-import type { TrajectoryRecord } from '../core/record.ts';
+import type { TrajectoryRecord } from '../core/index.ts';
 
 /** Rows [from, to) of a record chosen by a time interval, with the times they actually span. */
 export interface Selection {

@@ -1,5 +1,4 @@
-import type { Peak } from '../core/peaks.ts';
-import type { WindowName } from '../core/window.ts';
+import type { Peak, WindowName } from '../core/index.ts';
 
 /**
  * Highest sidelobe of each window relative to its main lobe: the exact

@@ -1,4 +1,4 @@
-import type { Peak } from '../core/peaks.ts';
+import type { Peak } from '../core/index.ts';
 
 /**
  * Text of the spectrum readouts. A peak is given as f in cycles per time

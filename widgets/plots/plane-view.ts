@@ -1,4 +1,4 @@
-import type { Simulation } from '../core/simulation.ts';
+import type { Simulation } from '../core/index.ts';
 import { unseen, type View } from './view.ts';
 import type { Mapping } from './axis-scale.ts';
 import { drawAxes, drawLegend, leftMarginFor, MARGIN, panelLabels, type AxisReadout } from './draw-axes.ts';

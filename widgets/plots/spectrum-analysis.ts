@@ -1,4 +1,4 @@
-import { findPeaks, spectrum, type Peak, type Spectrum, type WindowName } from '../core/spectrum.ts';
+import { findPeaks, type Peak, spectrum, type Spectrum, type WindowName } from '../core/index.ts';
 import { dropLeakage } from './peak-filter.ts';
 import { padFor } from './spectrum-scale.ts';
 

@@ -1,5 +1,4 @@
-import type { Peak } from '../core/peaks.ts';
-import type { Spectrum } from '../core/spectrum.ts';
+import type { Peak, Spectrum } from '../core/index.ts';
 import { makeMapping, type Mapping } from './axis-scale.ts';
 import { crisp, drawAxes, drawLegend, fontOf, leftMarginFor, MARGIN, panelLabels, type AxisReadout, type LegendItem, type Rect } from './draw-axes.ts';
 import { traceSeries } from './spectrum-trace.ts';

@@ -1,5 +1,4 @@
-import type { Peak } from '../core/peaks.ts';
-import type { Spectrum } from '../core/spectrum.ts';
+import type { Peak, Spectrum } from '../core/index.ts';
 
 /** The smallest of 1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8 × 10^k that is ≥ v. */
 export function niceCeil(v: number): number {

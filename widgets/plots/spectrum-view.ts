@@ -1,5 +1,4 @@
-import type { Peak, Spectrum, WindowName } from '../core/spectrum.ts';
-import type { Simulation } from '../core/simulation.ts';
+import type { Peak, Simulation, Spectrum, WindowName } from '../core/index.ts';
 import type { View } from './view.ts';
 import { drawAxes, fontOf, type AxisReadout } from './draw-axes.ts';
 import { PlotTable } from './plot-table.ts';

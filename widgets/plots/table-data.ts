@@ -1,4 +1,4 @@
-import type { TrajectoryRecord } from '../core/record.ts';
+import type { TrajectoryRecord } from '../core/index.ts';
 import { formatNumber } from '../controls/format.ts';
 
 /**

@@ -1,4 +1,4 @@
-import type { Simulation } from '../core/simulation.ts';
+import type { Simulation } from '../core/index.ts';
 import type { View } from './view.ts';
 import { pixelRatio } from './canvas.ts';
 import { resolveTheme, watchTheme, type Theme } from './colors.ts';

@@ -1,4 +1,4 @@
-import type { TrajectoryRecord } from '../core/record.ts';
+import type { TrajectoryRecord } from '../core/index.ts';
 import { MARGIN, yLabelRoom } from './axes.ts';
 import { context2d, createSurface, sizeCanvas, type Surface } from './canvas.ts';
 import type { Theme } from './colors.ts';

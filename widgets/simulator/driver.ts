@@ -1,5 +1,4 @@
-import { MAX_SPEED, outside } from '../core/limits.ts';
-import type { Simulation } from '../core/simulation.ts';
+import { MAX_SPEED, outside, type Simulation } from '../core/index.ts';
 import { carryOver, DEFAULT_BUDGET, integrateFrame, owedSteps, type Budget } from './frame-budget.ts';
 import type { View } from '../plots/view.ts';
 import { WorkerIntegrator } from './worker-integrator.ts';

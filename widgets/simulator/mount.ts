@@ -1,8 +1,7 @@
+import type { Model, Simulation } from '../core/index.ts';
 import { h } from '../controls/dom.ts';
 import { Readouts } from '../controls/readouts.ts';
 import { Transport } from '../controls/transport.ts';
-import type { Simulation } from '../core/simulation.ts';
-import type { Model } from '../core/types.ts';
 import { DataPanel } from '../data/data-panel.ts';
 import { Driver } from './driver.ts';
 import { Notices } from './notices.ts';

@@ -1,5 +1,5 @@
+import type { Simulation } from '../core/index.ts';
 import { h } from '../controls/dom.ts';
-import type { Simulation } from '../core/simulation.ts';
 import { formatNumber } from '../controls/format.ts';
 
 /**

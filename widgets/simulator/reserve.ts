@@ -11,9 +11,9 @@
  * (plots/sizes.ts) written in CSS on the width of `.pb-views`, a size
  * container. No DOM here: the build runs it in Node.
  */
+import type { Model } from '../core/index.ts';
 import { phasePairs } from '../plots/plane-columns.ts';
 import { heightCss, PHASE_MULTIPLE, PHASE_PANEL, SPECTRUM_PLOT, timePlotHeight, TRAJECTORY_PANEL, type Proportional } from '../plots/sizes.ts';
-import type { Model } from '../core/types.ts';
 import { readoutLines } from '../plots/spectrum-readout.ts';
 import { viewNames, type ViewName } from './options.ts';
 

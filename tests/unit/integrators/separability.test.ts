@@ -5,7 +5,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { canonicalEquations } from '../../../widgets/core/canonical-equations.ts';
-import { hamiltonEquations, parseHamiltonian } from '../../../widgets/core/expression/compile.ts';
+import { hamiltonEquations, parseHamiltonian } from '../../../widgets/core/expression/compile-expression.ts';
 import { loadMathjs } from '../../../widgets/core/expression/mathjs.ts';
 import { separability } from '../../../widgets/core/expression/separable.ts';
 import { methodChoice } from '../../../widgets/core/integrators/methods.ts';

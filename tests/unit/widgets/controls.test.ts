@@ -1,9 +1,10 @@
 import { describe, expect, it } from 'vitest';
 import { canonicalEquations } from '../../../widgets/core/canonical-equations.ts';
 import { Simulation } from '../../../widgets/core/simulation.ts';
-import { DriftTracker, energyColumns, relativeChange } from '../../../widgets/controls/drift.ts';
+import { DriftTracker, energyColumns } from '../../../widgets/controls/drift.ts';
+import { relativeChange } from '../../../widgets/core/invariants.ts';
 import { formatDrift, formatNumber, formatRate, formatSpeed, formatTime } from '../../../widgets/controls/format.ts';
-import { parseBound, parseDt, parseNumber } from '../../../widgets/controls/parse.ts';
+import { parseBound, parseDt, parseNumber } from '../../../widgets/controls/field-values.ts';
 import { SPEEDS, speedsWith } from '../../../widgets/controls/transport.ts';
 
 describe('controls/parse', () => {

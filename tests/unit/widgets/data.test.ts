@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { canonicalEquations } from '../../../widgets/core/canonical-equations.ts';
 import { toCSV } from '../../../widgets/core/csv.ts';
-import { parseJSON, toJSON } from '../../../widgets/core/json.ts';
+import { parseJSON, toJSON } from '../../../widgets/core/index.ts';
 import { TrajectoryRecord } from '../../../widgets/core/record.ts';
 import { Simulation } from '../../../widgets/core/simulation.ts';
 import { VERSION } from '../../../widgets/core/version.ts';

@@ -11,7 +11,7 @@
 declare const PHASEBOOK_WORKERS: readonly string[];
 
 declare global {
-  // eslint-disable-next-line no-var
+  // A global's declaration must use `var`.
   var phasebookWorkerUrl: (name: string) => string;
 }
 

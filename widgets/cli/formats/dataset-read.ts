@@ -7,7 +7,7 @@
  */
 import { closeSync, openSync, readSync } from 'node:fs';
 import { parquetMetadataAsync, parquetRead } from 'hyparquet';
-import { InputError } from '../../core/errors.ts';
+import { InputError } from '../../core/index.ts';
 import type { DatasetMeta } from '../dataset-meta.ts';
 import type { Block, DatasetShape } from './dataset-shape.ts';
 import { parseNpyHeader } from './npy.ts';

@@ -4,7 +4,7 @@
  * with spaces to a multiple of 64 bytes, then the raw array in C order.
  */
 import { endianness } from 'node:os';
-import { InputError } from '../../core/errors.ts';
+import { InputError } from '../../core/index.ts';
 
 const MAGIC = [0x93, 0x4e, 0x55, 0x4d, 0x50, 0x59]; // \x93NUMPY
 

@@ -8,7 +8,7 @@
  * the arrays after it are held in spill files (spill-file.ts) and copied in
  * at the end, so memory stays flat whatever the size.
  */
-import type { ExportMeta } from '../../core/json.ts';
+import type { ExportMeta } from '../../core/index.ts';
 import type { Sink } from '../output.ts';
 import { SpillFile } from '../spill-file.ts';
 import type { Block, DatasetShape, DatasetWriter } from './dataset-shape.ts';

@@ -18,8 +18,7 @@
  * file.
  */
 import { ByteWriter, ParquetWriter } from 'hyparquet-writer';
-import { VERSION } from '../../core/version.ts';
-import type { ExportMeta } from '../../core/json.ts';
+import { type ExportMeta, VERSION } from '../../core/index.ts';
 import type { Sink } from '../output.ts';
 import type { Block, DatasetShape, DatasetWriter } from './dataset-shape.ts';
 

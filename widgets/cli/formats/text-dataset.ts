@@ -4,8 +4,7 @@
  * when it has more, its rows trajectory by trajectory. JSON carries the meta
  * at its head; CSV has nowhere to keep it.
  */
-import { csvHeader } from '../../core/csv.ts';
-import { jsonHead, jsonTail, type ExportMeta } from '../../core/json.ts';
+import { csvHeader, type ExportMeta, jsonHead, jsonTail } from '../../core/index.ts';
 import type { Sink } from '../output.ts';
 import type { Block, DatasetShape, DatasetWriter } from './dataset-shape.ts';
 import { formatRows, type TextFormat } from './text-rows.ts';

@@ -9,8 +9,7 @@
  * line is ever built, so the garbage stays young and cheap, and the bytes
  * can be handed from a worker without a copy.
  */
-import { formatNumber } from '../../core/csv.ts';
-import { jsonNumber } from '../../core/json.ts';
+import { formatNumber, jsonNumber } from '../../core/index.ts';
 import type { Block } from './dataset-shape.ts';
 
 export type TextFormat = 'csv' | 'json';

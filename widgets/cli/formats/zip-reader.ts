@@ -4,7 +4,7 @@
  * read the arrays of an NPZ a piece at a time, however large.
  */
 import { fstatSync, readSync } from 'node:fs';
-import { InputError } from '../../core/errors.ts';
+import { InputError } from '../../core/index.ts';
 
 export interface ZipEntry {
   name: string;

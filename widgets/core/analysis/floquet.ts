@@ -34,7 +34,7 @@ export function floquet(model: Model, period: number, steps: number, t0 = 0): Fl
   return { trace, multiplier, growth: Math.log(multiplier) / period, stable: Math.abs(trace) < 2 };
 }
 
-export interface StabilityChartOptions {
+export interface FloquetGridOptions {
   /** parameter along the horizontal axis, and its values */
   x: { param: string; values: ArrayLike<number> };
   /** parameter along the vertical axis, and its values */
@@ -51,10 +51,10 @@ export interface StabilityChartOptions {
  * stability chart of parametric resonance. Entry [j·nx + i] is for
  * x.values[i], y.values[j]; 0 means stable.
  */
-export function stabilityChart(model: Model, options: StabilityChartOptions): Float64Array {
+export function floquetGrid(model: Model, options: FloquetGridOptions): Float64Array {
   const ix = model.paramNames.indexOf(options.x.param);
   const iy = model.paramNames.indexOf(options.y.param);
-  if (ix < 0 || iy < 0) throw new Error(`stabilityChart: the model has no parameter ${ix < 0 ? options.x.param : options.y.param}`);
+  if (ix < 0 || iy < 0) throw new Error(`floquetGrid: the model has no parameter ${ix < 0 ? options.x.param : options.y.param}`);
   const nx = options.x.values.length;
   const ny = options.y.values.length;
   const steps = options.stepsPerPeriod ?? 400;

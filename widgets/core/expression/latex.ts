@@ -1,5 +1,4 @@
 import type { MathNode } from 'mathjs';
-import type { HamiltonEquations } from './compile.ts';
 
 const GREEK = new Set(
   'alpha beta gamma delta epsilon zeta eta theta iota kappa lambda mu nu xi pi rho sigma tau upsilon phi chi psi omega Gamma Delta Theta Lambda Xi Pi Sigma Upsilon Phi Psi Omega'.split(
@@ -49,18 +48,20 @@ function negatedOperand(node: MathNode): MathNode | undefined {
 /**
  * LaTeX of H and of Hamilton's equations q̇ = ∂H/∂p, ṗ = −∂H/∂q, for the
  * chapters to typeset. The right-hand sides are the derivatives the stepper
- * integrates, with the minus of ṗ worked in for reading.
+ * integrates (`readable`: q's rates, then p's), with the minus of ṗ worked
+ * in for reading.
  */
 export function latexOf(
   hamiltonian: MathNode,
-  equations: HamiltonEquations,
+  readable: readonly MathNode[],
   names: readonly string[],
   dof: number,
 ): { hamiltonian: string; equations: string[] } {
   const lines = names.map((name, i) => {
-    const conjugate = i < dof ? names[i + dof] : names[i - dof];
-    const partial = `${equations.rates[i].negate ? '-' : ''}\\frac{\\partial H}{\\partial ${symbolTex(conjugate)}}`;
-    return `${symbolTex(name, true)} = ${partial} = ${toTex(equations.readable[i])}`;
+    const momentum = i >= dof;
+    const conjugate = momentum ? names[i - dof] : names[i + dof];
+    const partial = `${momentum ? '-' : ''}\\frac{\\partial H}{\\partial ${symbolTex(conjugate)}}`;
+    return `${symbolTex(name, true)} = ${partial} = ${toTex(readable[i])}`;
   });
   return { hamiltonian: `H = ${toTex(hamiltonian)}`, equations: lines };
 }

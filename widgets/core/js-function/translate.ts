@@ -15,7 +15,8 @@ import { SUPPORTED_FUNCTIONS } from '../expression/emit.ts';
  */
 export type Translation = { expression: string } | { reason: string };
 
-type N = AcornNode & Record<string, any>; // eslint-disable-line @typescript-eslint/no-explicit-any
+// acorn's node type lists no fields per node kind; the walk reads each kind's own fields after checking `type`.
+type N = AcornNode & Record<string, any>;
 
 class Untranslatable extends Error {}
 

@@ -1,6 +1,6 @@
 import { describe, expect, test } from 'vitest';
 import { parseCell } from '@observablehq/parser';
-import { cellBody, compileCell } from '../../../widgets/cells/compile.ts';
+import { cellBody, compileCell } from '../../../widgets/cells/cell-definition.ts';
 import { describeCell, formatError, type CellSpec } from '../../../widgets/cells/spec.ts';
 import { LoopGuard, LoopStopped } from '../../../widgets/cells/loop-guard.ts';
 

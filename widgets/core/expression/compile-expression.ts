@@ -145,7 +145,7 @@ export function generateCode(parsed: ParsedHamiltonian, equations: HamiltonEquat
       field: evaluatorSource(model, rates, 'vector'),
       hamiltonian: evaluatorSource(model, [{ node: hamiltonian, negate: false }], 'scalar'),
     },
-    latex: latexOf(hamiltonian, equations, names, dof),
+    latex: latexOf(hamiltonian, equations.readable, names, dof),
   };
 }
 

@@ -1,8 +1,5 @@
 import { readFileSync } from 'node:fs';
-import { InputError } from '../core/errors.ts';
-import { readTable } from '../core/read-table.ts';
-import { findPeaks, spectrum } from '../core/spectrum.ts';
-import { checkWindowName } from '../core/window.ts';
+import { checkWindowName, findPeaks, InputError, readTable, spectrum } from '../core/index.ts';
 import { number, parseArgs, wholeNumber } from './args.ts';
 
 export const SPECTRUM_USAGE = `phasebook spectrum --input FILE --column NAME [--trajectory J] [--from T0] [--to T1]
