@@ -14,6 +14,33 @@
  * Every module re-exported here is free of side effects at load, so a
  * bundle keeps only what its importer uses.
  */
+export {
+  type AnisotropicKepler,
+  angularMomentum,
+  DEVANEY_THRESHOLD,
+  fromLeviCivita,
+  keplerEnergy,
+  massRatio,
+  PAPER_INITIAL,
+  PAPER_K,
+  regularisedField,
+  regularisedHamiltonian,
+  regularisedJacobian,
+  relativeMotion,
+  toLeviCivita,
+} from './analysis/anisotropic-kepler.ts';
+export {
+  type KeplerLyapunov,
+  keplerLyapunov,
+  type KeplerSection,
+  keplerSection,
+  maxReturn,
+  regularisedOrbit,
+  regularisedStart,
+  sampleInterval,
+  sectionLaunch,
+  sectionScale,
+} from './analysis/anisotropic-kepler-flow.ts';
 export { crossings, meanPeriod } from './analysis/crossings.ts';
 export { floquet, floquetGrid } from './analysis/floquet.ts';
 export { henonHeiles } from './analysis/henon-heiles.ts';
