@@ -41,12 +41,19 @@ export {
   sectionLaunch,
   sectionScale,
 } from './analysis/anisotropic-kepler-flow.ts';
+export { type CheckInput } from './analysis/check-input.ts';
 export { crossings, meanPeriod } from './analysis/crossings.ts';
+export { boundedCheck, driftCheck, type DriftContext, type EnergyDrift, energyDrift, modifiedEnergyCheck } from './analysis/energy-drift.ts';
+export { fastestRate, spectralRadius } from './analysis/fastest-rate.ts';
 export { floquet, floquetGrid } from './analysis/floquet.ts';
 export { henonHeiles } from './analysis/henon-heiles.ts';
 export { keplerOrbit } from './analysis/kepler.ts';
 export { peakError } from './analysis/leakage.ts';
+export { fitLine, type LineFit } from './analysis/line-fit.ts';
 export { largestLyapunov } from './analysis/lyapunov.ts';
+export { verletCorrection } from './analysis/modified-hamiltonian.ts';
+export { localSlopes, METHOD_ORDERS, orderCheck, orderStudy, type OrderStudyInput } from './analysis/order-study.ts';
+export { completeEllipticK, pendulumPeriod } from './analysis/pendulum.ts';
 export { chaoticArea, type ChaoticArea, sectionBox } from './analysis/poincare-area.ts';
 export { allowed, launchState, type Plane, planeIndices, section } from './analysis/poincare.ts';
 export { angleBetween, deflectionFrom, outgoingDirection, rutherfordAngle } from './analysis/scattering.ts';
@@ -64,7 +71,9 @@ export { everyKSteps, listedTimes, type SampleTimes, stepsTo } from './dataset/s
 export { BlowUpError, InputError } from './errors.ts';
 export { type ExportMeta, methodMeta } from './export-meta.ts';
 export { checkName, stateNames } from './expression/names.ts';
-export { DEFAULT_METHOD, methodChoice, type MethodChoice } from './integrators/methods.ts';
+export { applyMethod } from './integrators/apply.ts';
+export { DEFAULT_METHOD, methodChoice, type MethodChoice, type MethodName } from './integrators/methods.ts';
+export { differenceJacobian } from './integrators/midpoint.ts';
 export { evaluateAlong, relativeChange, relativeDrift, type StateFunction } from './invariants.ts';
 export { isFunctionSource, MATH_NAMES } from './js-function/function-source.ts';
 export { type OpaqueHamiltonian } from './js-function/stencil.ts';
