@@ -6,8 +6,8 @@
  * the canvas is sized to its box, never scaled, so it reads at any width.
  */
 import type { Context } from '../plots/canvas.ts';
-import { crisp, drawAxes, fontOf, type Rect } from '../plots/draw-axes.ts';
-import { seriesColor, type Theme } from '../plots/view-theme.ts';
+import { crisp, drawAxes, fontOf, type Rect } from '../plots/axes.ts';
+import { seriesColor, type Theme } from '../plots/theme.ts';
 import type { ResolvedSeries } from './chart-options.ts';
 import { axisMapping, drawable, layoutChart, tickCount, type SettledChart } from './chart-scale.ts';
 

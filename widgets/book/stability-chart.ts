@@ -1,8 +1,8 @@
 import { type BuildOptions, compiledModelFor } from '../core/index.ts';
-import { makeMapping } from '../plots/axis-scale.ts';
+import { makeMapping } from '../plots/scale.ts';
 import { pixelRatio, sizeCanvas } from '../plots/canvas.ts';
-import { drawAxes, MARGIN } from '../plots/draw-axes.ts';
-import { readTheme } from '../plots/view-theme.ts';
+import { drawAxes, MARGIN } from '../plots/axes.ts';
+import { readTheme } from '../plots/theme.ts';
 import type { StabilityRequest } from './stability-worker.ts';
 
 export interface StabilityChartOptions {

@@ -2,7 +2,7 @@ import type { Simulation } from '../core/index.ts';
 import { askProvenance } from './provenance.ts';
 import { button, field, h, setFieldError } from '../controls/dom.ts';
 import { parseBound } from '../controls/field-values.ts';
-import { resolveTheme } from '../plots/colors.ts';
+import { readTheme } from '../plots/theme.ts';
 import { exportName, selectRows, type Selection } from './interval.ts';
 
 /**
@@ -130,7 +130,7 @@ export class DataPanel {
     if (!plot) return this.say('There is no plot to save.');
     try {
       const { onBackground, downloadBlob, pngBlob } = await exportersReady();
-      const canvas = onBackground(plot.canvas(), resolveTheme(this.element).background);
+      const canvas = onBackground(plot.canvas(), readTheme(this.element).bg);
       const name = `phasebook-${plot.name.replace(/[^a-z0-9]+/gi, '-').toLowerCase()}.png`;
       downloadBlob(await pngBlob(canvas), name);
       this.say(`Saved ${name}.`);

@@ -1,4 +1,4 @@
-import { scaleLinear } from './scale.ts';
+import { scaleLinear, transform, untransform, type SignedKind } from './scale.ts';
 
 /**
  * A rectangle of the data plane, [x0, x1] × [y0, y1]. Plots keep one per
@@ -12,9 +12,6 @@ export interface Extent {
   y0: number;
   y1: number;
 }
-
-/** How an axis maps data to pixels: straight, or the paper's m(y) = ln(1 + |y|/c)·sgn y. */
-export type AxisKind = 'linear' | 'symlog';
 
 /** An extent that contains nothing: including any point makes it that point. */
 export function emptyExtent(): Extent {
@@ -40,16 +37,6 @@ export function contains(outer: Extent, inner: Extent): boolean {
   return inner.x0 >= outer.x0 && inner.x1 <= outer.x1 && inner.y0 >= outer.y0 && inner.y1 <= outer.y1;
 }
 
-/** The forward transform of an axis kind; symlog's is d3's scaleSymlog transform with constant c. */
-export function transform(kind: AxisKind, v: number, c = 1): number {
-  return kind === 'symlog' ? Math.sign(v) * Math.log1p(Math.abs(v / c)) : v;
-}
-
-/** The inverse of `transform`. */
-export function untransform(kind: AxisKind, u: number, c = 1): number {
-  return kind === 'symlog' ? Math.sign(u) * Math.expm1(Math.abs(u)) * c : u;
-}
-
 /**
  * [lo, hi] widened by `headroom` of its span on each side, in the axis's
  * transformed space, and rounded outward to tick values for a linear axis.
@@ -57,7 +44,7 @@ export function untransform(kind: AxisKind, u: number, c = 1): number {
  * given a width proportional to its size, so that the first frames do not
  * zoom onto a single point.
  */
-export function padInterval(lo: number, hi: number, headroom: number, kind: AxisKind = 'linear', c = 1): [number, number] {
+export function padInterval(lo: number, hi: number, headroom: number, kind: SignedKind = 'linear', c = 1): [number, number] {
   let a = transform(kind, lo, c);
   let b = transform(kind, hi, c);
   if (!(b - a > 0)) {
@@ -83,8 +70,8 @@ export function growExtent(
   current: Extent,
   data: Extent,
   headroom: number,
-  xKind: AxisKind = 'linear',
-  yKind: AxisKind = 'linear',
+  xKind: SignedKind = 'linear',
+  yKind: SignedKind = 'linear',
   c = 1,
 ): Extent {
   const [x0, x1] = padInterval(Math.min(current.x0, data.x0), Math.max(current.x1, data.x1), headroom, xKind, c);
@@ -98,14 +85,14 @@ export function growExtent(
  * plot that keeps growing (particles flying off) is then redrawn a
  * logarithmic number of times, not once per small step outward.
  */
-export function stretchGrowth(previous: Extent, next: Extent, factor: number, xKind: AxisKind = 'linear', yKind: AxisKind = 'linear', c = 1): Extent {
+export function stretchGrowth(previous: Extent, next: Extent, factor: number, xKind: SignedKind = 'linear', yKind: SignedKind = 'linear', c = 1): Extent {
   if (isEmpty(previous)) return next;
   const [x0, x1] = stretch(previous.x0, previous.x1, next.x0, next.x1, factor, xKind, c);
   const [y0, y1] = stretch(previous.y0, previous.y1, next.y0, next.y1, factor, yKind, c);
   return { x0, x1, y0, y1 };
 }
 
-function stretch(oldLo: number, oldHi: number, lo: number, hi: number, factor: number, kind: AxisKind, c: number): [number, number] {
+function stretch(oldLo: number, oldHi: number, lo: number, hi: number, factor: number, kind: SignedKind, c: number): [number, number] {
   const [a0, a1, b0, b1] = [oldLo, oldHi, lo, hi].map((v) => transform(kind, v, c));
   const grewLow = b0 < a0;
   const grewHigh = b1 > a1;

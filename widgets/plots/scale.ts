@@ -1,7 +1,11 @@
 /**
- * Linear and symlog scales for the plots: d3's ticks, nice domains and tick
- * formats (d3-array, d3-scale's tickFormat) around a plain affine map.
+ * The plots' scales, value to pixel: linear, the paper's symmetric log
+ * (§6.4, m(y) = ln(1 + |y|/c)·sgn y) and log, each as a d3-style scale for
+ * ticks and labels together with the same map as two numbers (a Mapping),
+ * pixel = a·T(v) + b, which the per-sample loops evaluate inline.
  *
+ * Linear and symlog scales keep d3's ticks, nice domains and tick formats
+ * (d3-array, d3-scale's tickFormat) around a plain affine map:
  * d3-scale's own continuous scales interpolate through d3-interpolate,
  * which brings d3-color with it: about 7 kB gzip on every page with a plot,
  * for colour and string interpolation the plots never use (they map numbers
@@ -9,7 +13,7 @@
  * domain, range, invert, ticks, tickFormat and nice, and leave the rest.
  */
 import { nice as niceDomain, ticks as linearTicks } from 'd3-array';
-import { tickFormat as d3TickFormat } from 'd3-scale';
+import { scaleLog as d3ScaleLog, tickFormat as d3TickFormat } from 'd3-scale';
 
 export interface NumberScale {
   (value: number): number;
@@ -91,4 +95,86 @@ export function scaleSymlog(): NumberScale & { constant(c: number): NumberScale 
     return s.domain(s.domain());
   };
   return s;
+}
+
+/**
+ * A log scale: d3's scaleLog (its 1–9 and power-of-ten ticks), which the
+ * book's charts use; it brings d3-interpolate with it, so only modules that
+ * draw log axes import it.
+ */
+export function scaleLog(): NumberScale {
+  const log = d3ScaleLog();
+  const s = ((v: number) => log(v)) as NumberScale;
+  s.domain = ((value?: readonly number[]) => {
+    if (value === undefined) return log.domain() as [number, number];
+    log.domain(value as number[]);
+    return s;
+  }) as NumberScale['domain'];
+  s.range = ((value?: readonly number[]) => {
+    if (value === undefined) return log.range() as [number, number];
+    log.range(value as number[]);
+    return s;
+  }) as NumberScale['range'];
+  s.invert = (pixel) => log.invert(pixel);
+  s.ticks = (count = 10) => log.ticks(count);
+  s.tickFormat = (count = 10, specifier) => log.tickFormat(count, specifier);
+  s.nice = () => {
+    log.nice();
+    return s;
+  };
+  return s;
+}
+
+/** How an axis maps data to pixels: straight, the paper's symmetric log with constant c, or log (positive values only). */
+export type AxisKind = 'linear' | 'symlog' | 'log';
+
+/** The kinds an axis of signed values may take: a log axis would drop every sign change (of q or p, say). */
+export type SignedKind = Exclude<AxisKind, 'log'>;
+
+export type Domain = readonly [number, number];
+
+/** The forward transform T of an axis kind; symlog's is d3's scaleSymlog transform with constant c. */
+export function transform(kind: AxisKind, v: number, c = 1): number {
+  if (kind === 'symlog') return Math.sign(v) * Math.log1p(Math.abs(v / c));
+  return kind === 'log' ? Math.log(v) : v;
+}
+
+/** The inverse of `transform`. */
+export function untransform(kind: AxisKind, u: number, c = 1): number {
+  if (kind === 'symlog') return Math.sign(u) * Math.expm1(Math.abs(u)) * c;
+  return kind === 'log' ? Math.exp(u) : u;
+}
+
+/** The d3-style scale of a kind over `domain` onto `range`, for ticks and labels. */
+export function scaleFor(kind: AxisKind, domain: Domain, range: Domain, c = 1): NumberScale {
+  const scale = kind === 'symlog' ? scaleSymlog().constant(c) : kind === 'log' ? scaleLog() : scaleLinear();
+  return scale.domain(domain).range(range);
+}
+
+/**
+ * One axis of a plot: its d3-style scale (for ticks and labels) and the same
+ * map as two numbers, pixel = a·T(v) + b, so that per-sample loops do a
+ * multiply-add instead of a call through the scale. Both agree to rounding,
+ * a zero-width domain included (everything at the middle of the range).
+ */
+export interface Mapping {
+  readonly kind: AxisKind;
+  readonly c: number;
+  readonly a: number;
+  readonly b: number;
+  readonly scale: NumberScale;
+}
+
+export function makeMapping(kind: AxisKind, domain: Domain, range: Domain, c = 1, scale: NumberScale = scaleFor(kind, domain, range, c)): Mapping {
+  const u0 = transform(kind, domain[0], c);
+  const u1 = transform(kind, domain[1], c);
+  const a = u1 === u0 ? 0 : (range[1] - range[0]) / (u1 - u0);
+  return { kind, c, a, b: u1 === u0 ? (range[0] + range[1]) / 2 : range[0] - a * u0, scale };
+}
+
+/** Data value to pixel; allocation-free, for per-sample loops. */
+export function toPixel(m: Mapping, v: number): number {
+  if (m.kind === 'linear') return m.a * v + m.b;
+  if (m.kind === 'symlog') return m.a * Math.sign(v) * Math.log1p(Math.abs(v / m.c)) + m.b;
+  return m.a * Math.log(v) + m.b;
 }

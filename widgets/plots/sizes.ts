@@ -4,7 +4,7 @@
  * view's space before any script runs (simulator/reserve.ts), so that a
  * widget appears in a box of its own size and moves nothing.
  */
-import { MARGIN } from './axes.ts';
+import { TIME_MARGIN } from './axes.ts';
 
 /** A height that follows the width, clamp(min, slope · width, max), in CSS pixels. */
 export interface Proportional {
@@ -45,5 +45,5 @@ export function gridColumns(count: number, width: number): number {
 
 /** The time plot's canvas height for a plotting area of `area` pixels. */
 export function timePlotHeight(area = TIME_PLOT_AREA): number {
-  return area + MARGIN.top + MARGIN.bottom;
+  return area + TIME_MARGIN.top + TIME_MARGIN.bottom;
 }

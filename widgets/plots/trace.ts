@@ -1,4 +1,4 @@
-import { toPixel, type Mapping } from './axis-scale.ts';
+import { toPixel, type Mapping } from './scale.ts';
 import { includePoint, type Extent } from './extent.ts';
 
 /** The part of a Canvas 2D context a path is traced into; tests pass a recording fake. */

@@ -7,8 +7,8 @@
 import type { ViewName } from './options.ts';
 
 export const VIEW_MODULES = {
-  time: () => import('../plots/time-plot.ts'),
-  trajectory: () => import('../plots/trajectory-view.ts'),
-  phase: () => import('../plots/phase-portrait.ts'),
-  spectrum: () => import('../plots/spectrum-view.ts'),
+  time: () => import('../plots/time/time-plot.ts'),
+  trajectory: () => import('../plots/plane/trajectory-view.ts'),
+  phase: () => import('../plots/plane/phase-portrait.ts'),
+  spectrum: () => import('../plots/spectrum/spectrum-view.ts'),
 } satisfies Record<ViewName, () => Promise<unknown>>;

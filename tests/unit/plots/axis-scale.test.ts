@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { formatTick, makeMapping, symlogTicks, ticksFor, toPixel } from '../../../widgets/plots/axis-scale.ts';
+import { makeMapping, toPixel } from '../../../widgets/plots/scale.ts';
+import { formatTick, symlogTicks, ticksFor } from '../../../widgets/plots/ticks.ts';
 
 describe('axis-scale', () => {
   it('toPixel(makeMapping("linear", domain, range), v) agrees with the d3 scale', () => {
@@ -14,10 +15,11 @@ describe('axis-scale', () => {
     for (const v of [-2000, -30, -1, 0, 0.5, 40, 1500]) expect(toPixel(m, v)).toBeCloseTo(m.scale(v), 9);
   });
 
-  it('makeMapping(kind, [a, a], range) maps everything to the start of the range instead of dividing by zero', () => {
+  it('makeMapping(kind, [a, a], range) maps everything to the middle of the range, as its scale does, instead of dividing by zero', () => {
     const m = makeMapping('linear', [2, 2], [10, 50]);
-    expect(toPixel(m, 2)).toBe(10);
-    expect(toPixel(m, 5)).toBe(10);
+    expect(toPixel(m, 2)).toBe(30);
+    expect(toPixel(m, 5)).toBe(30);
+    expect(m.scale(5)).toBe(30);
   });
 
   it('symlogTicks(lo, hi, count, c) gives 0 and ±c·10^k, symmetric and within the domain', () => {

@@ -8,9 +8,8 @@ import {
   isEmpty,
   padInterval,
   stretchGrowth,
-  transform,
-  untransform,
 } from '../../../widgets/plots/extent.ts';
+import { transform, untransform } from '../../../widgets/plots/scale.ts';
 
 describe('extent', () => {
   it('includePoint(e, x, y) widens an empty extent to the point and ignores non-finite points', () => {

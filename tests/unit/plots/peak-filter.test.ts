@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { dropLeakage } from '../../../widgets/plots/peak-filter.ts';
+import { dropLeakage } from '../../../widgets/plots/spectrum/spectrum-analysis.ts';
 
 describe('peak-filter', () => {
   it('dropLeakage(peaks, T, "hamming") drops peaks no stronger than the window’s sidelobes', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { basisLine, describePeak, fixed, frequencyDecimals, peakLine, significant } from '../../../widgets/plots/peak-readout.ts';
+import { basisLine, describePeak, fixed, frequencyDecimals, peakLine, significant } from '../../../widgets/plots/spectrum/spectrum-readout.ts';
 
 describe('peak-readout', () => {
   it('fixed(v, d) rounds to d places with a true minus sign and no −0', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { axisTitle, columnsOf, defaultBodies, phasePairs, toExtent, tracksOf } from '../../../widgets/plots/plane-columns.ts';
+import { axisTitle, columnsOf, defaultBodies, phasePairs, toExtent, tracksOf } from '../../../widgets/plots/plane/plane-columns.ts';
 
 const single = ['t', 'q0', 'q1', 'q2', 'q3', 'p0', 'p1', 'p2', 'p3', 'H'];
 const batch = ['t', 'q0[0]', 'q1[0]', 'p0[0]', 'p1[0]', 'q0[1]', 'q1[1]', 'p0[1]', 'p1[1]', 'H[0]', 'H[1]'];
@@ -65,7 +65,7 @@ describe('plane-columns', () => {
 
 describe('a large batch: a plane view draws a stated, even sample of its trajectories', () => {
   it('tracksOf picks MAX_PLANE_TRACKS evenly spread trajectories, first and last included, with their own groups', async () => {
-    const { tracksOf, MAX_PLANE_TRACKS, batchTitle } = await import('../../../widgets/plots/plane-columns.ts');
+    const { tracksOf, MAX_PLANE_TRACKS, batchTitle } = await import('../../../widgets/plots/plane/plane-columns.ts');
     const count = 100_000;
     const columns = ['t', ...Array.from({ length: count }, (_, j) => `q[${j}]`), ...Array.from({ length: count }, (_, j) => `p[${j}]`)];
     const tracks = tracksOf(columns, ['q', 'p'], count, (j) => j);

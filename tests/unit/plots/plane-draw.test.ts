@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { TrajectoryRecord } from '../../../widgets/core/record.ts';
-import { toPixel } from '../../../widgets/plots/axis-scale.ts';
-import { defaultLook, drawDots, fadeLayer, rescaleImage, strokeRows, type LineStyle } from '../../../widgets/plots/plane-draw.ts';
-import { makePanel, placePanel, type Panel } from '../../../widgets/plots/plane-panels.ts';
+import { toPixel } from '../../../widgets/plots/scale.ts';
+import { defaultLook, drawDots, fadeLayer, rescaleImage, strokeRows, type LineStyle } from '../../../widgets/plots/plane/plane-draw.ts';
+import { makePanel, placePanel, type Panel } from '../../../widgets/plots/plane/plane-panels.ts';
 import { fakeContext } from './fake-context.ts';
 
 /** Two bodies circling the origin, sampled 100 times. */

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { toPixel } from '../../../widgets/plots/axis-scale.ts';
-import { MARGIN } from '../../../widgets/plots/draw-axes.ts';
+import { toPixel } from '../../../widgets/plots/scale.ts';
+import { MARGIN } from '../../../widgets/plots/axes.ts';
 import { contains } from '../../../widgets/plots/extent.ts';
-import { growPanel, makePanel, panelRect, placePanel, settlePanel, type PanelSpec } from '../../../widgets/plots/plane-panels.ts';
+import { growPanel, makePanel, panelRect, placePanel, settlePanel, type PanelSpec } from '../../../widgets/plots/plane/plane-panels.ts';
 import { gridColumns } from '../../../widgets/plots/sizes.ts';
 
 function spec(overrides: Partial<PanelSpec> = {}): PanelSpec {

@@ -1,12 +1,11 @@
 import { describe, expect, it } from 'vitest';
 import { canonicalEquations } from '../../../widgets/core/canonical-equations.ts';
 import { Simulation } from '../../../widgets/core/simulation.ts';
-import { compareWithTheory } from '../../../widgets/plots/peak-readout.ts';
+import { compareWithTheory } from '../../../widgets/plots/spectrum/spectrum-readout.ts';
 import { hamming } from '../../../widgets/core/window.ts';
-import { analyse, displaySpectrum, theoryOf } from '../../../widgets/plots/spectrum-analysis.ts';
-import { lastBin } from '../../../widgets/plots/spectrum-plot.ts';
-import { chooseRows, gatherSamples } from '../../../widgets/plots/spectrum-rows.ts';
-import { largestShown } from '../../../widgets/plots/spectrum-scale.ts';
+import { analyse, displaySpectrum, largestShown, theoryOf } from '../../../widgets/plots/spectrum/spectrum-analysis.ts';
+import { lastBin } from '../../../widgets/plots/spectrum/spectrum-plot.ts';
+import { chooseRows, gatherSamples } from '../../../widgets/plots/spectrum/spectrum-rows.ts';
 
 describe('spectrum-analysis', () => {
   it('analyse(samples, Δ, window, n) finds a tone’s frequency and amplitude, strongest first', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { checkSpectrumOptions } from '../../../widgets/plots/spectrum-options.ts';
+import { checkSpectrumOptions } from '../../../widgets/plots/spectrum/spectrum-rows.ts';
 
 describe('spectrum-options', () => {
   it('checkSpectrumOptions(o) accepts the documented options', () => {

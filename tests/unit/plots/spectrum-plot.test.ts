@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { spectrum } from '../../../widgets/core/spectrum.ts';
-import { drawAxes } from '../../../widgets/plots/draw-axes.ts';
-import { makeMapping } from '../../../widgets/plots/axis-scale.ts';
-import { drawSpectrum, lastBin, spectrumMappings, type SpectrumPicture } from '../../../widgets/plots/spectrum-plot.ts';
-import type { Theme } from '../../../widgets/plots/view-theme.ts';
+import { drawAxes } from '../../../widgets/plots/axes.ts';
+import { makeMapping } from '../../../widgets/plots/scale.ts';
+import { drawSpectrum, lastBin, spectrumMappings, type SpectrumPicture } from '../../../widgets/plots/spectrum/spectrum-plot.ts';
+import type { Theme } from '../../../widgets/plots/theme.ts';
 import { fakeContext } from './fake-context.ts';
 
 const theme: Theme = {
@@ -11,6 +11,8 @@ const theme: Theme = {
   bg: '#fff',
   muted: '#777',
   accent: '#2563eb',
+  axis: '#777',
+  grid: '#ddd',
   series: ['#2563eb', '#d9480f'],
   font: 'sans-serif',
   dark: false,

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { TrajectoryRecord } from '../../../widgets/core/record.ts';
-import { chooseRows, gatherSamples, MIN_SAMPLES } from '../../../widgets/plots/spectrum-rows.ts';
+import { chooseRows, gatherSamples, MIN_SAMPLES } from '../../../widgets/plots/spectrum/spectrum-rows.ts';
 
 /** A record of t, x = 10·i (row number i), sampled every 0.01, holding at most `capacity` rows. */
 function record(rows: number, capacity = rows): TrajectoryRecord {

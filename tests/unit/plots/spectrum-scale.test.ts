@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { chooseMaxFrequency, niceCeil, padFor, steadyLimit } from '../../../widgets/plots/spectrum-scale.ts';
+import { chooseMaxFrequency, niceCeil, padFor, steadyLimit } from '../../../widgets/plots/spectrum/spectrum-analysis.ts';
 
 describe('spectrum-scale', () => {
   it('niceCeil(v) is the next round number at or above v', () => {

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { makeMapping } from '../../../widgets/plots/axis-scale.ts';
-import { traceSeries } from '../../../widgets/plots/spectrum-trace.ts';
+import { makeMapping } from '../../../widgets/plots/scale.ts';
+import { traceSeries } from '../../../widgets/plots/spectrum/spectrum-plot.ts';
 import { recordingSink } from './fake-context.ts';
 
 describe('spectrum-trace', () => {

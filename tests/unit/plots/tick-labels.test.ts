@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { estimateWidth, labelsFit, linearLabels, scientific, symlogLabels, type AxisLabels, type LabelRoom } from '../../../widgets/plots/tick-labels.ts';
+import { estimateWidth, labelsFit, linearLabels, scientific, symlogLabels, type AxisLabels, type LabelRoom } from '../../../widgets/plots/ticks.ts';
 
 const FONT = 11;
 const SUPER = '⁰¹²³⁴⁵⁶⁷⁸⁹';

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { makeMapping } from '../../../widgets/plots/axis-scale.ts';
+import { makeMapping } from '../../../widgets/plots/scale.ts';
 import { emptyExtent } from '../../../widgets/plots/extent.ts';
 import { includeRows, liftPens, makePens, traceRows, type Stroke } from '../../../widgets/plots/trace.ts';
 import { recordingSink } from './fake-context.ts';

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { ageBuckets, ageOpacity, Fader, FADE_FRAMES, FLOOR, MIN_STEP, parseTrail } from '../../../widgets/plots/trail.ts';
+import { ageBuckets, ageOpacity, Fader, FADE_FRAMES, FLOOR, MIN_STEP, parseTrail } from '../../../widgets/plots/plane/trail.ts';
 
 describe('trail', () => {
   it('parseTrail(option) reads the four kinds of trail and rejects others', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { extent, fit, grow, roundOutward, settle } from '../../../widgets/plots/autoscale.ts';
+import { extent, fit, grow, roundOutward, settle } from '../../../widgets/plots/time/autoscale.ts';
 
 describe('plots/autoscale', () => {
   it('fit(lo, hi, "linear") pads and rounds outward to round numbers', () => {

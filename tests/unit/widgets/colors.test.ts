@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { PALETTE, seriesColor } from '../../../widgets/plots/colors.ts';
+import { PALETTE, seriesColor } from '../../../widgets/plots/theme.ts';
 
 /** WCAG relative luminance of #rrggbb. */
 function luminance(hex: string): number {
@@ -12,7 +12,7 @@ const contrast = (a: string, b: string) => {
   return (x + 0.05) / (y + 0.05);
 };
 
-describe('plots/colors', () => {
+describe('plots/theme', () => {
   it('every palette colour reads on a light and on a dark background (contrast ≥ 3.2)', () => {
     for (const c of PALETTE) {
       expect(contrast(c, '#ffffff')).toBeGreaterThanOrEqual(3.2);
@@ -20,9 +20,10 @@ describe('plots/colors', () => {
     }
   });
 
-  it('seriesColor(i) cycles through the palette', () => {
-    expect(seriesColor(0)).toBe(PALETTE[0]);
-    expect(seriesColor(PALETTE.length + 2)).toBe(PALETTE[2]);
-    expect(seriesColor(-1)).toBe(PALETTE[PALETTE.length - 1]);
+  it('seriesColor(theme, i) cycles through the palette', () => {
+    const theme = { series: PALETTE };
+    expect(seriesColor(theme, 0)).toBe(PALETTE[0]);
+    expect(seriesColor(theme, PALETTE.length + 2)).toBe(PALETTE[2]);
+    expect(seriesColor(theme, -1)).toBe(PALETTE[PALETTE.length - 1]);
   });
 });

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { ColumnDecimator, strokeColumns } from '../../../widgets/plots/decimate.ts';
+import { ColumnDecimator, strokeColumns } from '../../../widgets/plots/time/decimate.ts';
 import { FakeContext } from './fake-context.ts';
 
 /** A decimator whose sink strokes every series into `ctx` at offset 0. */

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { clampEnd, wheelColumns } from '../../../widgets/plots/history.ts';
+import { clampEnd, wheelColumns } from '../../../widgets/plots/time/time-scroll.ts';
 
 describe('plots/history', () => {
   it('clampEnd(end, first, liveEnd, w) keeps a scrolled window inside the record', () => {

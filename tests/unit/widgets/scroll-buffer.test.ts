@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { ScrollBuffer, SLOTS, slotOf, tileOf, tileSpan, tileX, viewLeft } from '../../../widgets/plots/scroll-buffer.ts';
+import { ScrollBuffer, SLOTS, slotOf, tileOf, tileSpan, tileX, viewLeft } from '../../../widgets/plots/time/scroll-buffer.ts';
 import { fakeFactory } from './fake-context.ts';
 
 describe('plots/scroll-buffer', () => {

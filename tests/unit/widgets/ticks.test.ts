@@ -1,11 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import type { Theme } from '../../../widgets/plots/colors.ts';
-import { drawTimeFrame, fontSize, plotBox } from '../../../widgets/plots/time-plot-parts.ts';
+import type { Theme } from '../../../widgets/plots/theme.ts';
+import { drawTimeFrame, plotBox } from '../../../widgets/plots/time/time-plot-parts.ts';
 import { formatPower } from '../../../widgets/plots/ticks.ts';
-import { yScale } from '../../../widgets/plots/y-map.ts';
+import { scaleFor } from '../../../widgets/plots/scale.ts';
 import { FakeContext } from './fake-context.ts';
 
-const THEME: Theme = { text: '#000', axis: '#111', grid: '#ccc', background: '#fff', series: ['red'], font: '11px sans-serif' };
+const THEME: Theme = { fg: '#000', bg: '#fff', muted: '#000', accent: '#00f', axis: '#111', grid: '#ccc', series: ['red'], font: 'sans-serif', dark: false };
 
 /** The y labels a time plot's frame draws, with their heights, for a domain on a plot `height` px tall. */
 function yLabels(kind: 'linear' | 'symlog', domain: [number, number], height = 244) {
@@ -13,18 +13,13 @@ function yLabels(kind: 'linear' | 'symlog', domain: [number, number], height = 2
   const box = plotBox(640, height);
   const state = { box, kind, domain, inset: 0.02, t0: 0, t1: 10 };
   const labels = drawTimeFrame(ctx as never, state, THEME, 640, height);
-  const drawn = ctx.calls.filter((c) => c[0] === 'fillText' && c[2] === box.x - 6).map((c) => ({ text: c[1] as string, y: c[3] as number }));
+  const drawn = ctx.calls.filter((c) => c[0] === 'fillText' && c[2] === box.left - 6).map((c) => ({ text: c[1] as string, y: c[3] as number }));
   return { labels, drawn, box };
 }
 
 describe('plots/ticks and the time plot’s y axis', () => {
   it('formatPower(v) writes 10ⁿ from 10⁴ on, with a true minus', () => {
     expect([0, 1, -10, 1000, 1e4, -1e20].map(formatPower)).toEqual(['0', '1', '−10', '1000', '10⁴', '−10²⁰']);
-  });
-
-  it('fontSize reads the pixel size of a canvas font', () => {
-    expect(fontSize('11px Inter')).toBe(11);
-    expect(fontSize('600 12.5px system-ui')).toBe(12.5);
   });
 
   it('the time plot’s y axis labels every decade of a symlog range its height has room for', () => {
@@ -46,8 +41,8 @@ describe('plots/ticks and the time plot’s y axis', () => {
         const ys = drawn.map((d) => d.y).sort((a, b) => a - b);
         for (let i = 1; i < ys.length; i++) expect(ys[i] - ys[i - 1]).toBeGreaterThanOrEqual(11);
         // the fake context measures 6 px a character: every label within the room left of the plot
-        for (const d of drawn) expect(d.text.length * 6).toBeLessThanOrEqual(box.x - 8);
-        const y = yScale(kind, domain, [box.y + box.height * 0.98, box.y + box.height * 0.02]);
+        for (const d of drawn) expect(d.text.length * 6).toBeLessThanOrEqual(box.left - 8);
+        const y = scaleFor(kind, domain, [box.top + box.height * 0.98, box.top + box.height * 0.02]);
         for (const d of drawn) expect(d.y).toBeGreaterThanOrEqual(y(domain[1]) - 1);
       }
     }

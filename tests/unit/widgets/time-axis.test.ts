@@ -1,8 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { multiples, TimeAxisStrips, timeTicks } from '../../../widgets/plots/time-axis.ts';
+import { multiples, TimeAxisStrips, timeTicks } from '../../../widgets/plots/time/time-axis.ts';
+import type { Theme } from '../../../widgets/plots/theme.ts';
 import { fakeFactory } from './fake-context.ts';
 
-const style = { text: '#333', axis: '#666', grid: '#ccc', font: '11px sans-serif' };
+const style: Theme = { fg: '#111', bg: '#fff', muted: '#333', accent: '#00f', axis: '#666', grid: '#ccc', series: ['red'], font: 'sans-serif', dark: false };
 
 describe('plots/time-axis', () => {
   it('timeTicks(window, width) picks one step for the whole trace', () => {

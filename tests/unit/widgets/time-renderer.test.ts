@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { TrajectoryRecord } from '../../../widgets/core/record.ts';
-import { TimeRenderer } from '../../../widgets/plots/time-renderer.ts';
+import { TimeRenderer } from '../../../widgets/plots/time/time-renderer.ts';
 import { fakeFactory, FakeContext, type FakeSurface } from './fake-context.ts';
 
 /** A record of q = sin t, p = cos t sampled every dt, from t0 to t1. */

@@ -1,19 +1,16 @@
-import type { Peak, Simulation, Spectrum, WindowName } from '../core/index.ts';
-import type { View } from './view.ts';
-import { drawAxes, fontOf, type AxisReadout } from './draw-axes.ts';
-import { PlotTable } from './plot-table.ts';
-import { show, type TableData } from './table-data.ts';
-import { analyse, displaySpectrum, theoryOf } from './spectrum-analysis.ts';
-import { basisLine, compareWithTheory, fixed, frequencyDecimals, nearestPeak, peakLine, significant } from './peak-readout.ts';
-import { columnsOf } from './plane-columns.ts';
+import type { Peak, Simulation, Spectrum, WindowName } from '../../core/index.ts';
+import type { View } from '../view.ts';
+import { drawAxes, fontOf, type AxisReadout } from '../axes.ts';
+import { PlotTable } from '../plot-table.ts';
+import { show, type TableData } from '../table-data.ts';
+import { analyse, chooseMaxFrequency, displaySpectrum, largestShown, steadyLimit, theoryOf } from './spectrum-analysis.ts';
+import { basisLine, compareWithTheory, fixed, frequencyDecimals, nearestPeak, peakLine, significant, SpectrumReadout } from './spectrum-readout.ts';
+import { columnsOf } from '../plane/plane-columns.ts';
 import { controlRow, selectControl, seriesChoices, type SelectControl } from './spectrum-controls.ts';
 import { drawSpectrum, lastBin, spectrumMappings, type SpectrumPicture, type SpectrumShow } from './spectrum-plot.ts';
-import { chooseRows, gatherSamples, MIN_SAMPLES, rowsInSpan, type RowChoice, type SpanOption } from './spectrum-rows.ts';
-import { chooseMaxFrequency, largestShown, steadyLimit } from './spectrum-scale.ts';
-import { checkSpectrumOptions } from './spectrum-options.ts';
-import { SpectrumReadout } from './spectrum-readout.ts';
-import { heightAt, SPECTRUM_PLOT } from './sizes.ts';
-import { ViewFrame } from './view-frame.ts';
+import { checkSpectrumOptions, chooseRows, gatherSamples, MIN_SAMPLES, type RowChoice, rowsInSpan, type SpanOption } from './spectrum-rows.ts';
+import { heightAt, SPECTRUM_PLOT } from '../sizes.ts';
+import { ViewFrame } from '../view-frame.ts';
 
 export interface SpectrumViewOptions {
   /** the record series to transform (a state name such as 'q', or a column such as 'q0[3]'); default the first coordinate */

@@ -1,10 +1,10 @@
-import type { Simulation } from '../core/index.ts';
-import type { View } from './view.ts';
-import type { AxisKind } from './extent.ts';
+import type { Simulation } from '../../core/index.ts';
+import type { View } from '../view.ts';
+import type { SignedKind } from '../scale.ts';
 import { axisTitle, batchTitle, phasePairs, toExtent, tracksOf, type ExtentOption, type Pair } from './plane-columns.ts';
 import type { PanelSpec } from './plane-panels.ts';
 import { PlaneView, type PlaneStyle } from './plane-view.ts';
-import { heightAt, PHASE_MULTIPLE, PHASE_PANEL } from './sizes.ts';
+import { heightAt, PHASE_MULTIPLE, PHASE_PANEL } from '../sizes.ts';
 
 export interface PhasePortraitOptions extends PlaneStyle {
   /** degrees of freedom i to plot as (q_i, p_i), or explicit pairs of series; default all */
@@ -15,7 +15,7 @@ export interface PhasePortraitOptions extends PlaneStyle {
    * 'symlog' maps y to sgn y·ln(1 + |y|/c) on both axes, as the paper draws
    * the exponentially growing phase path of parametric resonance (fig. 8)
    */
-  scale?: AxisKind;
+  scale?: SignedKind;
   /** the symlog constant c (default 1): the scale is nearly linear within ±c */
   constant?: number;
   /** legend labels, one per pair */

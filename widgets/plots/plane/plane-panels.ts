@@ -1,8 +1,8 @@
-import { makeMapping, type Mapping } from './axis-scale.ts';
-import { MARGIN, type Rect } from './draw-axes.ts';
-import { contains, emptyExtent, fitEqualAspect, growExtent, includePoint, isEmpty, stretchGrowth, transform, union, type AxisKind, type Extent } from './extent.ts';
-import { gridColumns } from './sizes.ts';
-import { makePens, type Pens } from './trace.ts';
+import { makeMapping, transform, type Mapping, type SignedKind } from '../scale.ts';
+import { MARGIN, type Rect } from '../axes.ts';
+import { contains, emptyExtent, fitEqualAspect, growExtent, includePoint, isEmpty, stretchGrowth, union, type Extent } from '../extent.ts';
+import { gridColumns } from '../sizes.ts';
+import { makePens, type Pens } from '../trace.ts';
 
 /** One line on a plane plot: the record columns of its x and y, and its colour group. */
 export interface Track {
@@ -19,8 +19,8 @@ export interface PanelSpec {
   /** legend entries, one per colour group shown */
   legend: readonly { label: string; group: number }[];
   title?: string;
-  xKind: AxisKind;
-  yKind: AxisKind;
+  xKind: SignedKind;
+  yKind: SignedKind;
   /** symlog constant c: the axis is linear within about ±c */
   constant: number;
   /** one data unit as long across as up */
@@ -142,7 +142,7 @@ export function settlePanel(panel: Panel): boolean {
   if (spec.extent || isEmpty(data) || isEmpty(fitted)) return false;
   const tight = growExtent(data, data, HEADROOM, spec.xKind, spec.yKind, spec.constant);
   if (spec.limit) clampTo(tight, spec.limit);
-  const span = (kind: AxisKind, lo: number, hi: number) => transform(kind, hi, spec.constant) - transform(kind, lo, spec.constant);
+  const span = (kind: SignedKind, lo: number, hi: number) => transform(kind, hi, spec.constant) - transform(kind, lo, spec.constant);
   const loose =
     span(spec.xKind, tight.x0, tight.x1) < 0.8 * span(spec.xKind, fitted.x0, fitted.x1) ||
     span(spec.yKind, tight.y0, tight.y1) < 0.8 * span(spec.yKind, fitted.y0, fitted.y1);

@@ -1,6 +1,6 @@
-import type { Extent } from './extent.ts';
+import type { Extent } from '../extent.ts';
 import type { Track } from './plane-panels.ts';
-import { spread } from './series.ts';
+import { spread } from '../series.ts';
 
 /** A pair of record series drawn as (x, y): state names such as 'q0', or exact columns such as 'q0[3]'. */
 export type Pair = readonly [string, string];

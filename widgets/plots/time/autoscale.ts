@@ -1,5 +1,4 @@
-import { scaleLinear } from './scale.ts';
-import { symexp, symlog, type Domain, type YScaleKind } from './y-map.ts';
+import { scaleLinear, transform, untransform, type Domain, type SignedKind } from '../scale.ts';
 
 /**
  * The y range of a plot that fits its data. A running plot only grows its
@@ -20,17 +19,17 @@ export const FIT_PADDING = 0.05;
  * all ≥ 0 (a distance, an energy, a count) keep 0 as the floor, and data
  * all ≤ 0 keep it as the ceiling.
  */
-export function fit(lo: number, hi: number, kind: YScaleKind, padding = FIT_PADDING): Domain {
+export function fit(lo: number, hi: number, kind: SignedKind, padding = FIT_PADDING): Domain {
   if (!Number.isFinite(lo) || !Number.isFinite(hi) || lo > hi) return [-1, 1];
   const floor = (padded: number) => (lo >= 0 && hi > 0 ? Math.max(0, padded) : padded);
   const ceiling = (padded: number) => (hi <= 0 && lo < 0 ? Math.min(0, padded) : padded);
   if (kind === 'symlog') {
-    let u0 = symlog(lo);
-    let u1 = symlog(hi);
+    let u0 = transform('symlog', lo);
+    let u1 = transform('symlog', hi);
     const pad = u1 > u0 ? (u1 - u0) * padding : 0.5;
     u0 -= pad;
     u1 += pad;
-    return [roundOutward(floor(symexp(u0)), -1), roundOutward(ceiling(symexp(u1)), 1)];
+    return [roundOutward(floor(untransform('symlog', u0)), -1), roundOutward(ceiling(untransform('symlog', u1)), 1)];
   }
   if (lo === hi) {
     const half = lo === 0 ? 1 : Math.abs(lo) * 0.1;
@@ -44,7 +43,7 @@ export function fit(lo: number, hi: number, kind: YScaleKind, padding = FIT_PADD
  * The range grown to contain [lo, hi] with headroom, or null when `domain`
  * already contains it (the common case, so the caller redraws nothing).
  */
-export function grow(domain: Domain, lo: number, hi: number, kind: YScaleKind): Domain | null {
+export function grow(domain: Domain, lo: number, hi: number, kind: SignedKind): Domain | null {
   if (!(lo < domain[0]) && !(hi > domain[1])) return null;
   if (!Number.isFinite(lo) || !Number.isFinite(hi)) return null;
   return fit(Math.min(lo, domain[0]), Math.max(hi, domain[1]), kind, GROWTH_HEADROOM);
@@ -65,10 +64,10 @@ export const SETTLE_RATIO = 0.8;
  * else null: growth leaves headroom, and once the data have stopped
  * growing the plot hugs them again.
  */
-export function settle(domain: Domain, lo: number, hi: number, kind: YScaleKind): Domain | null {
+export function settle(domain: Domain, lo: number, hi: number, kind: SignedKind): Domain | null {
   if (!(lo <= hi) || !Number.isFinite(lo) || !Number.isFinite(hi)) return null;
   const tight = fit(lo, hi, kind);
-  const t = kind === 'symlog' ? symlog : (v: number) => v;
+  const t = (v: number) => transform(kind, v);
   return t(tight[1]) - t(tight[0]) < SETTLE_RATIO * (t(domain[1]) - t(domain[0])) ? tight : null;
 }
 

@@ -1,16 +1,16 @@
-import type { Simulation } from '../core/index.ts';
-import { unseen, type View } from './view.ts';
-import type { Mapping } from './axis-scale.ts';
-import { drawAxes, drawLegend, leftMarginFor, MARGIN, panelLabels, type AxisReadout } from './draw-axes.ts';
+import type { Simulation } from '../../core/index.ts';
+import { unseen, type View } from '../view.ts';
+import type { Mapping } from '../scale.ts';
+import { drawAxes, drawLegend, leftMarginFor, MARGIN, panelLabels, type AxisReadout } from '../axes.ts';
 import { defaultLook, drawDots, fadeLayer, rescaleImage, strokeRows, type LineStyle } from './plane-draw.ts';
-import { includeRows, liftPens } from './trace.ts';
+import { includeRows, liftPens } from '../trace.ts';
 import { ageBuckets, Fader, FADE_FRAMES, parseTrail, type TrailOption } from './trail.ts';
 import { growPanel, makePanel, panelRect, placePanel, settlePanel, type Panel, type PanelSpec } from './plane-panels.ts';
-import { gridColumns } from './sizes.ts';
-import { ViewFrame, type Layer } from './view-frame.ts';
-import { seriesColor } from './view-theme.ts';
-import { PlotTable, TEXT_INTERVAL_MS } from './plot-table.ts';
-import { latestValues, rangeText, recordTable, rowsOver, show, TABLE_ROWS, type TableData } from './table-data.ts';
+import { gridColumns } from '../sizes.ts';
+import { ViewFrame, type Layer } from '../view-frame.ts';
+import { seriesColor } from '../theme.ts';
+import { PlotTable, TEXT_INTERVAL_MS } from '../plot-table.ts';
+import { latestValues, rangeText, recordTable, rowsOver, show, TABLE_ROWS, type TableData } from '../table-data.ts';
 
 /** Options every plane plot (trajectory, phase portrait) shares. */
 export interface PlaneStyle {

@@ -1,11 +1,10 @@
-import { scaleLinear } from './scale.ts';
-import { h as el } from '../controls/dom.ts';
-import { drawXFrame, drawXTicks, drawYAxis, MARGIN, yLabelRoom, type Box } from './axes.ts';
+import { h as el } from '../../controls/dom.ts';
+import { drawXFrame, drawXTicks, drawYAxis, fontOf, TICK_FONT, TIME_MARGIN, yLabelRoom, type Rect } from '../axes.ts';
 import { multiples, timeTicks } from './time-axis.ts';
-import type { Context } from './canvas.ts';
-import type { Theme } from './colors.ts';
-import { axisLabels, type AxisLabels } from './tick-labels.ts';
-import { yScale, type Domain, type YScaleKind } from './y-map.ts';
+import type { Context } from '../canvas.ts';
+import type { Theme } from '../theme.ts';
+import { axisLabels, type AxisLabels } from '../ticks.ts';
+import { scaleFor, scaleLinear, type Domain, type SignedKind } from '../scale.ts';
 
 /** The time windows offered, in time units across the plot. */
 export const WINDOWS = [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000];
@@ -13,18 +12,18 @@ export const WINDOWS = [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000];
 export { el };
 
 /** The plot area inside a stage of `width × height` CSS pixels. */
-export function plotBox(width: number, height: number): Box {
+export function plotBox(width: number, height: number): Rect {
   return {
-    x: MARGIN.left,
-    y: MARGIN.top,
-    width: Math.max(1, width - MARGIN.left - MARGIN.right),
-    height: Math.max(1, height - MARGIN.top - MARGIN.bottom),
+    left: TIME_MARGIN.left,
+    top: TIME_MARGIN.top,
+    width: Math.max(1, width - TIME_MARGIN.left - TIME_MARGIN.right),
+    height: Math.max(1, height - TIME_MARGIN.top - TIME_MARGIN.bottom),
   };
 }
 
 export interface AxesState {
-  box: Box;
-  kind: YScaleKind;
+  box: Rect;
+  kind: SignedKind;
   domain: Domain;
   /** fraction of the plot height kept free at top and bottom */
   inset: number;
@@ -40,30 +39,24 @@ export interface AxesState {
 export function drawTimeFrame(ctx: Context, state: AxesState, theme: Theme, width: number, height: number): AxisLabels {
   const { box, kind, domain, inset } = state;
   ctx.clearRect(0, 0, width, height);
-  const y = yScale(kind, domain, [box.y + box.height * (1 - inset), box.y + box.height * inset]);
-  ctx.font = theme.font;
+  const y = scaleFor(kind, domain, [box.top + box.height * (1 - inset), box.top + box.height * inset]);
+  ctx.font = fontOf(theme, TICK_FONT);
   const labels = axisLabels(kind, domain, {
     along: 'y',
     position: y,
     length: box.height,
     measure: (text) => ctx.measureText(text).width,
-    font: fontSize(theme.font),
-    room: yLabelRoom(box.x),
+    font: TICK_FONT,
+    room: yLabelRoom(box.left),
   });
   drawYAxis(ctx, box, labels, y, theme);
   drawXFrame(ctx, box, theme, 't');
   return labels;
 }
 
-/** The pixel size of a canvas font such as '11px Inter'. */
-export function fontSize(font: string): number {
-  const m = /(\d+(?:\.\d+)?)px/.exec(font);
-  return m ? Number(m[1]) : 11;
-}
-
 /** The top of the band under the plot that holds the t ticks, in CSS pixels. */
-export function xBandTop(box: Box): number {
-  return box.y + box.height;
+export function xBandTop(box: Rect): number {
+  return box.top + box.height;
 }
 
 /**
@@ -75,7 +68,7 @@ export function drawTimeTicks(ctx: Context, state: AxesState, theme: Theme, wind
   const { box, t0, t1 } = state;
   ctx.clearRect(0, 0, width, height);
   const { step, format } = timeTicks(window, box.width);
-  const x = scaleLinear().domain([t0, t1]).range([box.x, box.x + box.width]);
+  const x = scaleLinear().domain([t0, t1]).range([box.left, box.left + box.width]);
   drawXTicks(ctx, 0.5, multiples(t0, t1 + 1e-9 * step, step), format, x, theme);
 }
 
@@ -99,16 +92,16 @@ export function compositePlot(
   out.height = height + top;
   const ctx = out.getContext('2d');
   if (!ctx) throw new Error('this browser gave no 2D canvas context');
-  ctx.fillStyle = theme.background;
+  ctx.fillStyle = theme.bg;
   ctx.fillRect(0, 0, out.width, out.height);
   ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
-  ctx.font = theme.font.replace(/^\d+px/, '12px');
+  ctx.font = fontOf(theme, 12);
   ctx.textBaseline = 'middle';
-  let x = MARGIN.left;
+  let x = TIME_MARGIN.left;
   for (const { name, color } of legend) {
     ctx.fillStyle = color;
     ctx.fillRect(x, band / 2 - 1.5, 14, 3);
-    ctx.fillStyle = theme.text;
+    ctx.fillStyle = theme.muted;
     ctx.fillText(name, x + 18, band / 2);
     x += 28 + ctx.measureText(name).width;
   }

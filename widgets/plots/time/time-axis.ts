@@ -1,7 +1,7 @@
-import { scaleLinear } from './scale.ts';
-import type { AxisStyle } from './axes.ts';
-import { drawXTicks } from './axes.ts';
-import type { Context, Surface, SurfaceFactory } from './canvas.ts';
+import { scaleLinear } from '../scale.ts';
+import type { Theme } from '../theme.ts';
+import { drawXTicks } from '../axes.ts';
+import type { Context, Surface, SurfaceFactory } from '../canvas.ts';
 import { ScrollBuffer, SLOTS, tileOf, viewLeft } from './scroll-buffer.ts';
 
 /** What the strips need to know of the trace's time mapping (a TimeRenderer). */
@@ -66,12 +66,12 @@ export class TimeAxisStrips {
    * `end` (once each), then calls `place(slot, strip, x)` with each strip's x
    * in device pixels relative to the plot's left edge minus `spill` (NaN: hidden).
    */
-  place(end: number, mapping: TimeMapping, style: AxisStyle, place: (slot: number, strip: Surface, x: number) => void): void {
+  place(end: number, mapping: TimeMapping, theme: Theme, place: (slot: number, strip: Surface, x: number) => void): void {
     const ring = this.ring;
     if (!ring) return;
     const w = mapping.width;
     const left = viewLeft(end, w);
-    for (let k = tileOf(left, w); k <= tileOf(Math.max(left, end - 1), w); k++) if (!ring.holds(k)) this.paint(k, ring.claim(k), mapping, style);
+    for (let k = tileOf(left, w); k <= tileOf(Math.max(left, end - 1), w); k++) if (!ring.holds(k)) this.paint(k, ring.claim(k), mapping, theme);
     for (let slot = 0; slot < SLOTS; slot++) {
       const x = ring.placement(slot, end);
       place(slot, ring.surface(slot), x);
@@ -83,14 +83,14 @@ export class TimeAxisStrips {
     this.ring?.composite(target, end, x - this.spill, y);
   }
 
-  private paint(tile: number, ctx: Context, m: TimeMapping, style: AxisStyle): void {
+  private paint(tile: number, ctx: Context, m: TimeMapping, theme: Theme): void {
     const { step, format } = this.ticks;
     const t0 = m.origin + (tile * m.width) / m.scaleX;
     const t1 = m.origin + ((tile + 1) * m.width) / m.scaleX;
     const r = this.ratio;
     ctx.setTransform(r, 0, 0, r, 0, 0);
     const position = (t: number): number => (this.spill + (t - m.origin) * m.scaleX - tile * m.width) / r;
-    drawXTicks(ctx, 0.5, multiples(t0, t1, step), format, position, style);
+    drawXTicks(ctx, 0.5, multiples(t0, t1, step), format, position, theme);
     ctx.setTransform(1, 0, 0, 1, 0, 0);
   }
 }

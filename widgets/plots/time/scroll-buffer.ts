@@ -1,4 +1,4 @@
-import { context2d, type Context, type Surface, type SurfaceFactory } from './canvas.ts';
+import { context2d, type Context, type Surface, type SurfaceFactory } from '../canvas.ts';
 
 /**
  * The scrolling graph of the paper's §5.1, generalised from two bitmaps to a

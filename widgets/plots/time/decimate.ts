@@ -1,4 +1,4 @@
-import type { Context } from './canvas.ts';
+import type { Context } from '../canvas.ts';
 
 /**
  * Min/max decimation by pixel column: however many samples fall into one

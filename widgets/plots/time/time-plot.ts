@@ -1,18 +1,17 @@
-import type { Simulation } from '../core/index.ts';
-import type { View } from './view.ts';
-import { pixelRatio } from './canvas.ts';
-import { resolveTheme, watchTheme, type Theme } from './colors.ts';
-import { clampEnd } from './history.ts';
+import type { Simulation } from '../../core/index.ts';
+import type { View } from '../view.ts';
+import { pixelRatio } from '../canvas.ts';
+import { readTheme, watchTheme, type Theme } from '../theme.ts';
+import { clampEnd, listenScroll, ScrubBar } from './time-scroll.ts';
 import { Legend } from './legend.ts';
-import { planSeries, type SeriesPlan } from './series.ts';
+import { planSeries, type SeriesPlan } from '../series.ts';
 import { el, WINDOWS } from './time-plot-parts.ts';
 import type { TimeRenderer, UpdateResult } from './time-renderer.ts';
-import { timePlotHeight } from './sizes.ts';
-import { listenScroll, ScrubBar } from './time-scroll.ts';
+import { timePlotHeight } from '../sizes.ts';
 import { TimeStage } from './time-stage.ts';
-import { PlotTable, TEXT_INTERVAL_MS } from './plot-table.ts';
-import { rangeText, recordTable, rowsOver, show, type TableData } from './table-data.ts';
-import type { YScaleKind } from './y-map.ts';
+import { PlotTable, TEXT_INTERVAL_MS } from '../plot-table.ts';
+import { rangeText, recordTable, rowsOver, show, type TableData } from '../table-data.ts';
+import type { SignedKind } from '../scale.ts';
 
 export interface TimePlotOptions {
   /** legend entries shown at first, e.g. ['q', 'p']; the others start hidden (default: all; a batch: its coordinates) */
@@ -20,7 +19,7 @@ export interface TimePlotOptions {
   /** time units across the plot (default 10) */
   window?: number;
   /** 'symlog' (or 'log') is the paper's m_y(y) = 20 ln(1 + |y|) sgn y (default 'linear') */
-  scale?: YScaleKind | 'log';
+  scale?: SignedKind | 'log';
   /** a fixed y range; the plot then does not autoscale until Refit is pressed */
   domain?: readonly [number, number];
   /** height of the plot area in CSS pixels (default 220) */
@@ -70,7 +69,7 @@ export class TimePlot implements View {
     if (options.scale !== undefined && !['linear', 'log', 'symlog'].includes(options.scale)) {
       throw new Error(`timePlot: scale must be 'linear' or 'symlog', not ${JSON.stringify(options.scale)}`);
     }
-    const kind: YScaleKind = options.scale === 'log' || options.scale === 'symlog' ? 'symlog' : 'linear';
+    const kind: SignedKind = options.scale === 'log' || options.scale === 'symlog' ? 'symlog' : 'linear';
     const window = options.window ?? 10;
     if (!(window > 0) || !Number.isFinite(window)) throw new Error(`timePlot: window must be a positive number of time units, not ${window}`);
     const label = options.label ?? 'Time plot';
@@ -159,7 +158,7 @@ export class TimePlot implements View {
   }
 
   private currentTheme(): Theme {
-    return (this.theme ??= resolveTheme(this.element));
+    return (this.theme ??= readTheme(this.element));
   }
 
   private color(group: number): string {
@@ -331,7 +330,7 @@ export class TimePlot implements View {
     this.scrub.show(lo, r.timeOf(r.end), Math.max(first, t1 - r.window), t1, first, record.time(record.length - 1), this.historyEnd === null);
   }
 
-  private setKind(kind: YScaleKind): void {
+  private setKind(kind: SignedKind): void {
     this.renderer.setDomain(this.renderer.domain, kind);
     this.logButton.setAttribute('aria-pressed', String(kind === 'symlog'));
     this.refit();
@@ -357,7 +356,7 @@ export class TimePlot implements View {
   }
 
   private retheme(): void {
-    this.theme = resolveTheme(this.element);
+    this.theme = readTheme(this.element);
     this.plan?.groups.forEach((_, i) => this.legend?.recolor(i, this.color(i)));
     this.applySeries();
   }

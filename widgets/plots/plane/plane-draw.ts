@@ -1,7 +1,7 @@
-import type { TrajectoryRecord } from '../core/index.ts';
-import { toPixel, type Mapping } from './axis-scale.ts';
+import type { TrajectoryRecord } from '../../core/index.ts';
+import { toPixel, type Mapping } from '../scale.ts';
 import type { Panel } from './plane-panels.ts';
-import { traceRows, type Stroke } from './trace.ts';
+import { traceRows, type Stroke } from '../trace.ts';
 
 /**
  * The drawing steps of a plane plot, each over all panels: stroking new

@@ -1,14 +1,13 @@
-import type { TrajectoryRecord } from '../core/index.ts';
-import { MARGIN, yLabelRoom } from './axes.ts';
-import { context2d, createSurface, sizeCanvas, type Surface } from './canvas.ts';
-import type { Theme } from './colors.ts';
+import type { TrajectoryRecord } from '../../core/index.ts';
+import { fontOf, TICK_FONT, TIME_MARGIN, yLabelRoom } from '../axes.ts';
+import { context2d, createSurface, sizeCanvas, type Surface } from '../canvas.ts';
+import type { Theme } from '../theme.ts';
 import { multiples, TimeAxisStrips, timeTicks } from './time-axis.ts';
-import { compositePlot, drawTimeFrame, drawTimeTicks, el, fontSize, plotBox, xBandTop, type AxesState } from './time-plot-parts.ts';
-import type { AxisReadout } from './draw-axes.ts';
-import { scaleLinear } from './scale.ts';
-import type { AxisLabels } from './tick-labels.ts';
+import { compositePlot, drawTimeFrame, drawTimeTicks, el, plotBox, xBandTop, type AxesState } from './time-plot-parts.ts';
+import type { AxisReadout } from '../axes.ts';
+import type { AxisLabels } from '../ticks.ts';
 import { TimeRenderer } from './time-renderer.ts';
-import { yScale, type YScaleKind } from './y-map.ts';
+import { scaleFor, scaleLinear, type SignedKind } from '../scale.ts';
 
 /** CSS pixels the t labels may show left of the plot area: enough for a label at its left edge, not for the next. */
 const STRIP_LEFT = 8;
@@ -44,7 +43,7 @@ export class TimeStage {
   constructor(
     readonly cssHeight: number,
     window: number,
-    kind: YScaleKind,
+    kind: SignedKind,
     label: string,
   ) {
     this.renderer = new TimeRenderer((w, h) => this.layer(w, h, this.newTiles), window, kind);
@@ -56,7 +55,7 @@ export class TimeStage {
     this.stripBox = el('div', 'pb-tiles pb-xstrips', hidden);
     this.band = el('canvas', 'pb-xaxis', hidden);
     this.history.hidden = this.band.hidden = true;
-    for (const layer of [this.tiles, this.history]) Object.assign(layer.style, { left: `${MARGIN.left}px`, top: `${MARGIN.top}px` });
+    for (const layer of [this.tiles, this.history]) Object.assign(layer.style, { left: `${TIME_MARGIN.left}px`, top: `${TIME_MARGIN.top}px` });
     const aria = { tabindex: '0', role: 'group', 'aria-roledescription': 'plot', 'aria-label': `${label}: drag, or use the arrow keys, to scroll back in time` };
     this.element = el('div', 'pb-stage', aria, this.frame, this.tiles, this.history, this.stripBox, this.band);
     this.element.style.height = `${cssHeight}px`;
@@ -69,16 +68,16 @@ export class TimeStage {
     const box = plotBox(cssWidth, this.cssHeight);
     sizeCanvas(this.frame, cssWidth, this.cssHeight, ratio);
     sizeCanvas(this.history, box.width, box.height, ratio);
-    sizeCanvas(this.band, cssWidth, MARGIN.bottom, ratio);
+    sizeCanvas(this.band, cssWidth, TIME_MARGIN.bottom, ratio);
     this.band.style.top = `${xBandTop(box)}px`;
     Object.assign(this.tiles.style, { width: `${box.width}px`, height: `${box.height}px` });
     this.renderer.resize(this.history.width, this.history.height, lineWidth);
-    this.strips.resize(this.renderer.width, Math.round(MARGIN.bottom * ratio), ratio, this.renderer);
+    this.strips.resize(this.renderer.width, Math.round(TIME_MARGIN.bottom * ratio), ratio, this.renderer);
     Object.assign(this.stripBox.style, {
-      left: `${box.x - STRIP_LEFT}px`,
+      left: `${box.left - STRIP_LEFT}px`,
       top: `${xBandTop(box)}px`,
-      width: `${box.width + STRIP_LEFT + MARGIN.right}px`,
-      height: `${MARGIN.bottom}px`,
+      width: `${box.width + STRIP_LEFT + TIME_MARGIN.right}px`,
+      height: `${TIME_MARGIN.bottom}px`,
     });
     this.tiles.replaceChildren(...this.newTiles);
     this.stripBox.replaceChildren(...this.newStrips);
@@ -126,7 +125,7 @@ export class TimeStage {
     this.bandKey = key;
     const ctx = context2d(this.band);
     ctx.setTransform(this.ratio, 0, 0, this.ratio, 0, 0);
-    drawTimeTicks(ctx, state, theme, r.window, this.cssWidth, MARGIN.bottom);
+    drawTimeTicks(ctx, state, theme, r.window, this.cssWidth, TIME_MARGIN.bottom);
   }
 
   /** The picture as shown, for a PNG: opaque, with a legend line, at device resolution. */
@@ -135,8 +134,8 @@ export class TimeStage {
     const r = this.ratio;
     return compositePlot(this.frame.width, this.frame.height, r, theme, legend, (ctx, top) => {
       ctx.drawImage(this.frame, 0, top);
-      const x = Math.round(box.x * r);
-      const y = top + Math.round(box.y * r);
+      const x = Math.round(box.left * r);
+      const y = top + Math.round(box.top * r);
       const band = top + Math.round(xBandTop(box) * r);
       const clip = (x0: number, y0: number, w: number, h: number, paint: () => void): void => {
         ctx.save();
@@ -148,7 +147,7 @@ export class TimeStage {
       };
       clip(x, y, this.history.width, this.history.height, () => (live ? this.renderer.composite(ctx, x, y) : ctx.drawImage(this.history, x, y)));
       if (!live) ctx.drawImage(this.band, 0, band);
-      else clip(x - STRIP_LEFT * r, band, (box.width + STRIP_LEFT + MARGIN.right) * r, MARGIN.bottom * r, () => this.strips.composite(ctx, this.renderer.end, x, band));
+      else clip(x - STRIP_LEFT * r, band, (box.width + STRIP_LEFT + TIME_MARGIN.right) * r, TIME_MARGIN.bottom * r, () => this.strips.composite(ctx, this.renderer.end, x, band));
     });
   }
 
@@ -164,7 +163,7 @@ export class TimeStage {
 
   /** Redraws grid and y axis when the range, size or theme changed. */
   private drawFrame(theme: Theme, state: AxesState): void {
-    const key = `${state.kind} ${state.domain[0]} ${state.domain[1]} ${this.cssWidth} ${this.ratio} ${theme.text} ${theme.grid}`;
+    const key = `${state.kind} ${state.domain[0]} ${state.domain[1]} ${this.cssWidth} ${this.ratio} ${theme.muted} ${theme.axis} ${theme.grid} ${theme.font}`;
     if (key === this.frameKey) return;
     this.frameKey = key;
     const ctx = context2d(this.frame);
@@ -179,10 +178,10 @@ export class TimeStage {
     const { box } = state;
     const ctx = context2d(this.frame);
     ctx.save();
-    ctx.font = theme.font;
-    const font = fontSize(theme.font);
+    ctx.font = fontOf(theme, TICK_FONT);
+    const font = TICK_FONT;
     const width = (text: string) => ctx.measureText(text).width;
-    const y = yScale(state.kind, state.domain, [box.y + box.height * (1 - state.inset), box.y + box.height * state.inset]);
+    const y = scaleFor(state.kind, state.domain, [box.top + box.height * (1 - state.inset), box.top + box.height * state.inset]);
     const labels = this.yLabels ?? { values: [], labels: [], offset: 0, offsetText: '' };
     const yAxis: AxisReadout = {
       domain: [state.domain[0], state.domain[1]],
@@ -190,10 +189,10 @@ export class TimeStage {
       labels: labels.values.flatMap((v, i) => (labels.labels[i] ? [{ text: labels.labels[i], at: y(v), width: width(labels.labels[i]) }] : [])),
       offset: labels.offsetText,
       font,
-      room: yLabelRoom(box.x),
+      room: yLabelRoom(box.left),
     };
     const { step, format } = timeTicks(r.window, box.width);
-    const x = scaleLinear().domain([state.t0, state.t1]).range([box.x, box.x + box.width]);
+    const x = scaleLinear().domain([state.t0, state.t1]).range([box.left, box.left + box.width]);
     const xAxis: AxisReadout = {
       domain: [state.t0, state.t1],
       kind: 'linear',

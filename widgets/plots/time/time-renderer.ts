@@ -1,9 +1,9 @@
-import type { TrajectoryRecord } from '../core/index.ts';
+import type { TrajectoryRecord } from '../../core/index.ts';
 import { fit, grow, settle } from './autoscale.ts';
-import type { Context, Surface, SurfaceFactory } from './canvas.ts';
+import type { Context, Surface, SurfaceFactory } from '../canvas.ts';
 import { ColumnDecimator, pendingRange, strokeColumns } from './decimate.ts';
 import { ScrollBuffer, SLOTS, viewLeft } from './scroll-buffer.ts';
-import { mapY, yMap, type Domain, type YMap, type YScaleKind } from './y-map.ts';
+import { makeMapping, toPixel, type Domain, type Mapping, type SignedKind } from '../scale.ts';
 
 /** What `update` did: nothing new, drew the new samples, or grew the y range and redrew everything. */
 export type UpdateResult = 'none' | 'drawn' | 'rescaled';
@@ -28,7 +28,7 @@ export class TimeRenderer {
   lineWidth = 1.5;
   private pad = 4;
   private fitted = false;
-  private map: YMap = yMap('linear', [-1, 1], [1, 0]);
+  private map: Mapping = makeMapping('linear', [-1, 1], [1, 0]);
   private buffer: ScrollBuffer | null = null;
   private columns = new Int32Array(0);
   private styles: string[] = [];
@@ -44,7 +44,7 @@ export class TimeRenderer {
   constructor(
     private readonly create: SurfaceFactory,
     public window: number,
-    public kind: YScaleKind = 'linear',
+    public kind: SignedKind = 'linear',
   ) {
     this.live = this.decimator(0, (d) => this.paintLive(d));
     this.history = this.decimator(0, (d) => this.paintHistory(d));
@@ -90,7 +90,7 @@ export class TimeRenderer {
     this.domain = domain;
     this.fitted = fitted;
     const inset = Math.min(this.height / 4, this.pad);
-    this.map = yMap(kind, domain, [this.height - inset, inset]);
+    this.map = makeMapping(kind, domain, [this.height - inset, inset]);
   }
 
   /** The pixel range the domain maps onto, as fractions of the height: for drawing the axis in CSS pixels. */
@@ -241,7 +241,7 @@ export class TimeRenderer {
       for (let r = s.from; r < s.to; r++) {
         const at = r * width;
         d.column(Math.floor((data[at] - origin) * scaleX));
-        for (let k = 0; k < n; k++) d.value(k, mapY(map, data[at + columns[k]]));
+        for (let k = 0; k < n; k++) d.value(k, toPixel(map, data[at + columns[k]]));
       }
     }
     d.end();

@@ -1,8 +1,8 @@
-import type { Peak, Spectrum } from '../core/index.ts';
-import { makeMapping, type Mapping } from './axis-scale.ts';
-import { crisp, drawAxes, drawLegend, fontOf, leftMarginFor, MARGIN, panelLabels, type AxisReadout, type LegendItem, type Rect } from './draw-axes.ts';
-import { traceSeries } from './spectrum-trace.ts';
-import { seriesColor, type Theme } from './view-theme.ts';
+import type { Peak, Spectrum } from '../../core/index.ts';
+import { type AxisReadout, crisp, drawAxes, drawLegend, fontOf, leftMarginFor, type LegendItem, MARGIN, panelLabels, type Rect } from '../axes.ts';
+import { makeMapping, type Mapping, toPixel } from '../scale.ts';
+import { seriesColor, type Theme } from '../theme.ts';
+import type { PathSink } from '../trace.ts';
 
 /** Which parts of the transform X_k are drawn: |X|, Re X and Im X, or all three. */
 export type SpectrumShow = 'magnitude' | 'reim' | 'both';
@@ -122,4 +122,59 @@ function drawPeakMarks(g: CanvasRenderingContext2D, rect: Rect, mx: Mapping, my:
     g.fillText(String(i + 1), x, y - 8);
   });
   g.restore();
+}
+
+/**
+ * Traces y against x for indices [0, end] as one polyline, connecting
+ * adjacent points (the paper's §5.2). Where several points fall in one pixel
+ * column, as when a long series is shown up to Nyquist, the column is drawn
+ * as its first value, its range and its last value: the same picture as
+ * every point, at a few segments per pixel.
+ */
+export function traceSeries(sink: PathSink, x: ArrayLike<number>, y: ArrayLike<number>, end: number, mx: Mapping, my: Mapping): number {
+  let segments = 0;
+  let started = false;
+  let column = NaN;
+  let cx = 0;
+  let first = 0;
+  let last = 0;
+  let min = 0;
+  let max = 0;
+  const emit = (px: number, py: number): void => {
+    if (started) {
+      sink.lineTo(px, py);
+      segments++;
+    } else {
+      sink.moveTo(px, py);
+      started = true;
+    }
+  };
+  const flush = (): void => {
+    if (Number.isNaN(column)) return;
+    emit(cx, first);
+    if (min !== max) {
+      emit(cx, min);
+      emit(cx, max);
+      emit(cx, last);
+    }
+  };
+  const n = Math.min(end + 1, x.length, y.length);
+  for (let k = 0; k < n; k++) {
+    const px = toPixel(mx, x[k]);
+    const py = toPixel(my, y[k]);
+    if (!Number.isFinite(px) || !Number.isFinite(py)) continue;
+    const c = Math.floor(px);
+    if (c !== column) {
+      flush();
+      column = c;
+      cx = px;
+      first = last = min = max = py;
+    } else {
+      last = py;
+      if (py < min) min = py;
+      if (py > max) max = py;
+    }
+  }
+  flush();
+  return segments;
 }
