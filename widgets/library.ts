@@ -76,10 +76,12 @@ export function createLibrary(page: PageContext, cellSignal: () => AbortSignal |
     table: () => import('./book/table.ts').then((m) => m.table),
     /** stabilityChart({hamiltonian, params, x, y, frequencyParam, boundaries, onSelect}) → Floquet chart computed in a worker */
     stabilityChart: () => import('./book/stability-chart.ts').then((m) => (options: Parameters<typeof m.stabilityChart>[0]) => m.stabilityChart(options, build())),
-    /** poincareSection({energies, energy, plane, orbits, crossings, onLaunch}) → Hénon–Heiles surface of section computed in a worker; click to launch an orbit */
+    /** poincareSection({energies, energy, plane, orbits, crossings, onLaunch}) → Hénon–Heiles surface of section computed in a worker; click to launch an orbit; {system: 'anisotropic-kepler', factor} for the paper's chaotic Kepler variant */
     poincareSection: () => import('./book/poincare-section.ts').then((m) => m.poincareSection),
     /** chaoticShare({energy, plane, grid, time}) → Promise of the section's chaotic share and its errors, computed in a worker */
     chaoticShare: () => import('./book/poincare-section.ts').then((m) => m.chaoticShare),
+    /** anisotropicKeplerRun({factor, time}) → Promise of the paper's orbit in the anisotropic Kepler problem, regularised, at two tolerances: period, energy error, exponent */
+    anisotropicKeplerRun: () => import('./book/poincare-section.ts').then((m) => m.anisotropicKeplerRun),
     /** henonHeilesFig6: the chaotic share read off Hénon & Heiles (1964) Fig. 6 at E = 1/12, 1/8, 1/6, with its reading error */
     henonHeilesFig6: () => import('./core/analysis/poincare-area.ts').then((m) => m.HENON_HEILES_FIG6),
 
