@@ -249,7 +249,7 @@ test('bad options show a one-line error under the cell; the other cells keep run
   await page.waitForFunction(() => document.querySelector('[data-cell="sim"] [data-cell-error]')?.textContent?.includes('sped'));
   const typo = await errorOf(page, 'sim');
   oneLine(typo);
-  assert.equal(typo, 'Error: simulator: unknown option "sped"; did you mean "speed"?');
+  assert.equal(typo, 'InputError: simulator: unknown option "sped"; did you mean "speed"?');
   assert.equal(await page.locator(SIM).count(), 0, 'the old widget is gone, not left running');
   // Another cell still runs.
   await typeIntoCell(page, 'initial', 'initial = [1, 0]');
@@ -267,9 +267,25 @@ test('bad options show a one-line error under the cell; the other cells keep run
   await page.waitForFunction(() => document.querySelector('[data-cell="sim"] [data-cell-error]')?.textContent?.includes('initial'));
   const count = await errorOf(page, 'sim');
   oneLine(count);
-  assert.equal(count, "Error: simulator: initial has 3 values; it needs 2 (q's then p's for 1 degree(s) of freedom)");
+  assert.equal(count, "InputError: simulator: initial has 3 values; it needs 2 (q's then p's for 1 degree(s) of freedom)");
   await typeIntoCell(page, 'initial', 'initial = [2, 0]');
   await recovers();
+
+  // A method with the playground's ready model: the midpoint rule applies to any model; a splitting needs
+  // code generated with the model, so it is refused in one line saying where to ask, never dropped.
+  await markOld(page);
+  await typeIntoCell(page, 'options', "options = ({dt: 5e-4, speed: 1, views: ['time'], method: 'verlet'})");
+  await page.waitForFunction(() => document.querySelector('[data-cell="sim"] [data-cell-error]')?.textContent?.includes('verlet'));
+  const refused = await errorOf(page, 'sim');
+  oneLine(refused);
+  assert.match(refused, /^InputError: simulator: the model was built for rk38, and verlet needs code generated with the model; pass method: 'verlet' to canonicalEquations/);
+  await typeIntoCell(page, 'options', "options = ({dt: 5e-4, speed: 1, views: ['time'], method: 'midpoint'})");
+  await waitForNewWidget(page, "s.model.method?.name === 'midpoint'");
+  assert.equal(await errorOf(page, 'sim'), '');
+  await waitForTime(page, (await widget(page)).t, 0.05);
+  await markOld(page);
+  await typeIntoCell(page, 'options', "options = ({dt: 5e-4, speed: 2, views: ['time']})");
+  await waitForNewWidget(page, 's.model.method === undefined');
 
   // A syntax error in H: the cell that reads H says where; the cells that use it say which input failed.
   await markOld(page);

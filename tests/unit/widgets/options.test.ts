@@ -20,6 +20,7 @@ async function messageOf(raw: unknown): Promise<string> {
     const { message } = error as Error;
     expect(message).toMatch(/^simulator: /);
     expect(message).not.toContain('\n');
+    expect(message.length).toBeLessThan(190);
     return message;
   }
   return '';
