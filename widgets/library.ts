@@ -84,6 +84,11 @@ export function createLibrary(page: PageContext, cellSignal: () => AbortSignal |
     anisotropicKeplerRun: () => import('./book/poincare-section.ts').then((m) => m.anisotropicKeplerRun),
     /** henonHeilesFig6: the chaotic share read off Hénon & Heiles (1964) Fig. 6 at E = 1/12, 1/8, 1/6, with its reading error */
     henonHeilesFig6: () => import('./core/analysis/poincare-area.ts').then((m) => m.HENON_HEILES_FIG6),
+    /** methodComparison({hamiltonian, params, initial, dt, tEnd, methods, order}) → the same model under several integrators, computed in a worker: energy error, phase portraits, cost, order study; its `results` is a Promise of the checks */
+    methodComparison: () =>
+      import('./book/method-comparison.ts').then((m) => (options: Parameters<typeof m.methodComparison>[0]) => m.methodComparison(options, build())),
+    /** pendulumPeriod(q0, p0, omega) → the exact period 4K(k)/ω of H = p²/2 − ω² cos q, from the complete elliptic integral */
+    pendulumPeriod: () => import('./core/analysis/pendulum.ts').then((m) => m.pendulumPeriod),
 
     // The simulation core
     /** canonicalEquations({dof, hamiltonian, params}) → Promise of a Model */

@@ -24,6 +24,8 @@ import * as acorn from 'acorn';
 import katex from 'katex';
 import { compiledModelFor, canonicalEquations, type HamiltonianSpec } from '../../widgets/core/canonical-equations.ts';
 import { compileModel } from '../../widgets/core/compile-model.ts';
+import { methodChoice } from '../../widgets/core/integrators/methods.ts';
+import { pendulumPeriod } from '../../widgets/core/analysis/pendulum.ts';
 import type { CompiledModel } from '../../widgets/core/compiled-model.ts';
 import { provideMathjs } from '../../widgets/core/expression/mathjs.ts';
 import { math } from '../../widgets/core/expression/mathjs-instance.ts';
@@ -111,6 +113,18 @@ export async function precompileChapter(cells: readonly HeadlessCell[]): Promise
     simulator: async (options: ModelOptions & ReserveOptions & { model?: Model }) => {
       const model = options.model ?? (await canonicalEquations(modelSpec(options), build));
       return prerendered(reserveHtml(simulatorPlan(options, model)), []);
+    },
+    // Pure arithmetic, wanted by the cells that define a comparison's order study.
+    pendulumPeriod,
+    // The comparison runs in the page; here each method's model is compiled, so the page needs no mathjs.
+    methodComparison: async (options: { hamiltonian: string; dof?: number; params?: Record<string, number>; methods?: string[]; coordinates?: string[]; momenta?: string[] }) => {
+      const methods = new Set((options.methods ?? ['rk38', 'verlet', 'yoshida4', 'midpoint']).map((m) => (m === 'adaptive' ? 'rk38' : m)).concat('rk38'));
+      for (const name of methods) {
+        const spec = { dof: options.dof ?? 1, hamiltonian: options.hamiltonian, params: options.params, coordinates: options.coordinates, momenta: options.momenta };
+        // A method that cannot run on this H (a splitting on an H that does not separate) is the page's to report.
+        await compile({ ...spec, method: name === 'rk38' ? undefined : methodChoice(name) }).catch(() => undefined);
+      }
+      throw new NotAtBuildTime('methodComparison runs in the page');
     },
     stabilityChart: async (options: { hamiltonian: string; params: Record<string, number> }) => {
       await compile({ dof: 1, hamiltonian: options.hamiltonian, params: options.params });

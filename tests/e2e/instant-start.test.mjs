@@ -25,6 +25,7 @@ import { DIST } from './server.mjs';
 /** Every page whose cells define models or show formulas. */
 const CHAPTERS = [
   '/introduction/',
+  '/how-the-simulator-integrates/',
   '/parametric-resonance/',
   '/nonlinear-oscillator/',
   '/kepler/',

@@ -119,7 +119,7 @@ export function orderCheck(input: OrderStudyInput): CheckInput {
       },
     ],
     errors: {
-      formula: term(nextTerm, `the next term of the error series, c·h^${q}${symmetric ? ' (a symmetric method: even powers only)' : ''}, read off the local slopes ${local.map((v) => v.toFixed(2)).join(', ')}`),
+      formula: term(nextTerm, `the next term of the error series, c·h${q === 1 ? '¹' : '²'}${symmetric ? ' (a symmetric method: even powers only)' : ''}, read off the local slopes ${local.map((v) => v.toFixed(2)).join(', ')}`),
       integration: term(carried(() => reference), reference === 0 ? `none: measured against ${referenceName}` : `${referenceName} is itself wrong by about ${two(reference)}`),
       measurement: term(carried((i) => study.rounding[i]), `rounding, 2⁻⁵³ of the state per step as a random walk over ${Math.round(input.T / hMax)}–${Math.round(input.T / hMin)} steps`),
     },
