@@ -1,4 +1,4 @@
-import { relativeChange, type TrajectoryRecord } from '../core/index.ts';
+import { relativeChange, type RecordLayout, type TrajectoryRecord } from '../core/index.ts';
 
 /**
  * The energy drift |H − H₀| / |H₀| of the readouts. H₀ is taken from the
@@ -6,13 +6,9 @@ import { relativeChange, type TrajectoryRecord } from '../core/index.ts';
  * its oldest rows. For a batch the worst trajectory is reported.
  */
 
-/** Record columns holding H: `H`, or `H[0]` … `H[M−1]` for a batch; empty when the model has no H. */
-export function energyColumns(columns: readonly string[]): number[] {
-  const out: number[] = [];
-  columns.forEach((name, c) => {
-    if (name === 'H' || /^H\[\d+\]$/.test(name)) out.push(c);
-  });
-  return out;
+/** Record columns holding H, one per trajectory; empty when the model has no H. */
+export function energyColumns(layout: Pick<RecordLayout, 'series'>): number[] {
+  return [...(layout.series.find((s) => s.name === 'H')?.columns ?? [])];
 }
 
 /** Tracks the drift of every H column against its value at the start. */
@@ -21,8 +17,8 @@ export class DriftTracker {
   private readonly h0: Float64Array;
   private started = false;
 
-  constructor(columns: readonly string[]) {
-    this.columns = energyColumns(columns);
+  constructor(layout: Pick<RecordLayout, 'series'>) {
+    this.columns = energyColumns(layout);
     this.h0 = new Float64Array(this.columns.length);
   }
 

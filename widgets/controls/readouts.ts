@@ -40,7 +40,7 @@ export class Readouts {
 
   /** Starts over for a restarted or new simulation. */
   reset(simulation: Simulation): void {
-    this.tracker = new DriftTracker(simulation.record.columns);
+    this.tracker = new DriftTracker(simulation.record);
     this.tracker.start(simulation.record);
     const batch = simulation.count > 1;
     this.hItem.hidden = !this.tracker.hasEnergy || batch;

@@ -83,7 +83,7 @@ export { MAX_BATCH, MAX_CELL_STEPS, MAX_DOF, MAX_DT, MAX_SPEED, MIN_DT, outside 
 export { modelFromCompiled } from './model-from-compiled.ts';
 export { findPeaks, type Peak } from './peaks.ts';
 export { readTable } from './read-table.ts';
-export { TrajectoryRecord } from './record.ts';
+export { recordLayout, type RecordLayout, type RecordSeries, TrajectoryRecord } from './record.ts';
 export { rk38 } from './rk38.ts';
 export { DEFAULT_DT, type DerivedSeries, Simulation, type SimulationOptions } from './simulation.ts';
 export { spectrum, type Spectrum } from './spectrum.ts';

@@ -8,6 +8,49 @@ function checkIndex(i: number, n: number, what: string): void {
   if (!Number.isInteger(i) || i < 0 || i >= n) throw new RangeError(`TrajectoryRecord: ${what} ${i} is outside [0, ${n})`);
 }
 
+/** One quantity a record holds (q0, p0, H …), with its column for each trajectory: trajectory j's is `columns[j]`. */
+export interface RecordSeries {
+  readonly name: string;
+  readonly columns: readonly number[];
+}
+
+/**
+ * What a record's columns hold: `columns` are the names written in export
+ * headers (t, then q0, p0 … or, for a batch, q0[0], p0[0] … q0[1] …), and
+ * `series` says which columns belong to which quantity and trajectory, so
+ * that nothing needs to read the structure back out of the names.
+ */
+export interface RecordLayout {
+  readonly columns: readonly string[];
+  readonly series: readonly RecordSeries[];
+  /** trajectories in the record: 1, or the batch's size */
+  readonly trajectories: number;
+}
+
+/**
+ * The layout of `count` trajectories of the state `names` and the derived
+ * series `derived`: t; each trajectory's state in turn; then each
+ * trajectory's derived values. One trajectory's columns are named plainly,
+ * a batch's `name[j]`.
+ */
+export function recordLayout(names: readonly string[], derived: readonly string[], count = 1): RecordLayout {
+  const columns = ['t'];
+  const series: RecordSeries[] = [];
+  const block = (group: readonly string[]) => {
+    const first = columns.length;
+    for (let j = 0; j < count; j++) columns.push(...group.map((n) => (count === 1 ? n : `${n}[${j}]`)));
+    group.forEach((name, k) => series.push({ name, columns: Array.from({ length: count }, (_, j) => first + j * group.length + k) }));
+  };
+  block(names);
+  block(derived);
+  return { columns, series, trajectories: count };
+}
+
+/** The layout of a record whose columns are all its own series, one trajectory: what a table read back from a file is. */
+function plainLayout(columns: readonly string[]): RecordLayout {
+  return { columns, series: columns.slice(1).map((name, i) => ({ name, columns: [i + 1] })), trajectories: 1 };
+}
+
 /**
  * The samples of one running trajectory, kept in a fixed-size ring so that a
  * simulation left running for hours uses bounded memory: once full, each new
@@ -16,8 +59,10 @@ function checkIndex(i: number, n: number, what: string): void {
  *
  * Rows are indexed in time order: row 0 is the oldest row still held.
  */
-export class TrajectoryRecord {
+export class TrajectoryRecord implements RecordLayout {
   readonly columns: readonly string[];
+  readonly series: readonly RecordSeries[];
+  readonly trajectories: number;
   readonly width: number;
   readonly capacity: number;
   /** Rows overwritten since creation or the last clear(). */
@@ -28,7 +73,8 @@ export class TrajectoryRecord {
   private head = 0;
   private count = 0;
 
-  constructor(columns: readonly string[], capacity: number) {
+  constructor(layout: readonly string[] | RecordLayout, capacity: number) {
+    const { columns, series, trajectories } = Array.isArray(layout) ? plainLayout(layout as readonly string[]) : (layout as RecordLayout);
     if (!Number.isInteger(capacity) || capacity < 1) {
       throw new Error(`TrajectoryRecord: capacity must be a positive integer number of rows, got ${capacity}`);
     }
@@ -36,6 +82,8 @@ export class TrajectoryRecord {
     if (problem !== undefined) throw new Error(`TrajectoryRecord: ${problem}`);
     if (columns[0] !== 't') throw new Error(`TrajectoryRecord: column 0 must be "t", got "${columns[0]}"`);
     this.columns = Object.freeze([...columns]);
+    this.series = Object.freeze(series.map((s) => Object.freeze({ name: s.name, columns: Object.freeze([...s.columns]) })));
+    this.trajectories = trajectories;
     this.width = columns.length;
     this.capacity = capacity;
     this.buf = new Float64Array(capacity * this.width);

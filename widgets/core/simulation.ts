@@ -1,5 +1,5 @@
 import { BlowUpError, InputError } from './errors.ts';
-import { TrajectoryRecord } from './record.ts';
+import { recordLayout, TrajectoryRecord } from './record.ts';
 import { SUMMARY } from './summary.ts';
 import type { Model } from './types.ts';
 
@@ -73,7 +73,14 @@ export class Simulation {
     const h = model.hamiltonian;
     const energy = options.energy !== false && h ? [{ name: 'H', evaluate: h }] : [];
     this.derived = [...energy, ...(options.derived ?? [])];
-    this.record = new TrajectoryRecord(this.columns(), options.capacity ?? 1_000_000);
+    this.record = new TrajectoryRecord(
+      recordLayout(
+        this.model.names,
+        this.derived.map((d) => d.name),
+        this.count,
+      ),
+      options.capacity ?? 1_000_000,
+    );
     this.row = new Float64Array(this.record.width);
     this.sample();
   }
@@ -124,16 +131,6 @@ export class Simulation {
     this.error = null;
     this.record.clear();
     this.sample();
-  }
-
-  private columns(): string[] {
-    const { names } = this.model;
-    const derived = this.derived.map((d) => d.name);
-    if (this.count === 1) return ['t', ...names, ...derived];
-    const columns = ['t'];
-    for (let j = 0; j < this.count; j++) columns.push(...names.map((n) => `${n}[${j}]`));
-    for (let j = 0; j < this.count; j++) columns.push(...derived.map((n) => `${n}[${j}]`));
-    return columns;
   }
 
   private sample(): void {

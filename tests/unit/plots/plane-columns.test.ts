@@ -1,31 +1,34 @@
 import { describe, expect, it } from 'vitest';
+import { recordLayout } from '../../../widgets/core/index.ts';
 import { axisTitle, columnsOf, defaultBodies, phasePairs, toExtent, tracksOf } from '../../../widgets/plots/plane/plane-columns.ts';
 
-const single = ['t', 'q0', 'q1', 'q2', 'q3', 'p0', 'p1', 'p2', 'p3', 'H'];
-const batch = ['t', 'q0[0]', 'q1[0]', 'p0[0]', 'p1[0]', 'q0[1]', 'q1[1]', 'p0[1]', 'p1[1]', 'H[0]', 'H[1]'];
+// Columns t, q0 … q3, p0 … p3, H
+const single = recordLayout(['q0', 'q1', 'q2', 'q3', 'p0', 'p1', 'p2', 'p3'], ['H']);
+// Columns t, q0[0], q1[0], p0[0], p1[0], q0[1], q1[1], p0[1], p1[1], H[0], H[1]
+const batch = recordLayout(['q0', 'q1', 'p0', 'p1'], ['H'], 2);
 
 describe('plane-columns', () => {
-  it('columnsOf(columns, name, 1) is the column of that name', () => {
-    expect(columnsOf(single, 'q2', 1)).toEqual([3]);
-    expect(columnsOf(single, 'H', 1)).toEqual([9]);
+  it('columnsOf(layout, name) is the column of that series in one trajectory', () => {
+    expect(columnsOf(single, 'q2')).toEqual([3]);
+    expect(columnsOf(single, 'H')).toEqual([9]);
   });
 
-  it('columnsOf(columns, name, M) is name[j] for every trajectory j, or the one exact column', () => {
-    expect(columnsOf(batch, 'q1', 2)).toEqual([2, 6]);
-    expect(columnsOf(batch, 'p0[1]', 2)).toEqual([7]);
+  it('columnsOf(layout, name) is the series\' column in every trajectory j, or the one column its header names', () => {
+    expect(columnsOf(batch, 'q1')).toEqual([2, 6]);
+    expect(columnsOf(batch, 'p0[1]')).toEqual([7]);
   });
 
-  it('columnsOf(columns, name, M) names the series it has when the name is unknown', () => {
-    expect(() => columnsOf(single, 'x', 1)).toThrow(/no series named “x”; the record has q0, q1/);
-    expect(() => columnsOf(single, 't', 1)).toThrow(/no series/);
+  it('columnsOf(layout, name) names the series it has when the name is unknown', () => {
+    expect(() => columnsOf(single, 'x')).toThrow(/no series named “x”; the record has q0, q1/);
+    expect(() => columnsOf(single, 't')).toThrow(/no series/);
   });
 
-  it('tracksOf(columns, pair, M, group) pairs x and y trajectory by trajectory', () => {
-    expect(tracksOf(batch, ['q0', 'q1'], 2, (j) => 10 + j)).toEqual([
+  it('tracksOf(layout, pair, group) pairs x and y trajectory by trajectory', () => {
+    expect(tracksOf(batch, ['q0', 'q1'], (j) => 10 + j)).toEqual([
       { x: 1, y: 2, group: 10 },
       { x: 5, y: 6, group: 11 },
     ]);
-    expect(() => tracksOf(batch, ['q0', 'p0[1]'], 2, () => 0)).toThrow(/as many of each/);
+    expect(() => tracksOf(batch, ['q0', 'p0[1]'], () => 0)).toThrow(/as many of each/);
   });
 
   it('defaultBodies(names, dof) pairs consecutive coordinates and refuses one coordinate', () => {
@@ -67,8 +70,14 @@ describe('a large batch: a plane view draws a stated, even sample of its traject
   it('tracksOf picks MAX_PLANE_TRACKS evenly spread trajectories, first and last included, with their own groups', async () => {
     const { tracksOf, MAX_PLANE_TRACKS, batchTitle } = await import('../../../widgets/plots/plane/plane-columns.ts');
     const count = 100_000;
-    const columns = ['t', ...Array.from({ length: count }, (_, j) => `q[${j}]`), ...Array.from({ length: count }, (_, j) => `p[${j}]`)];
-    const tracks = tracksOf(columns, ['q', 'p'], count, (j) => j);
+    // Every trajectory's q, then every trajectory's p.
+    const block = (name: string, first: number, n: number) => ({ name, columns: Array.from({ length: n }, (_, j) => first + j) });
+    const layout = (n: number) => ({
+      columns: ['t', ...Array.from({ length: n }, (_, j) => `q[${j}]`), ...Array.from({ length: n }, (_, j) => `p[${j}]`)],
+      series: [block('q', 1, n), block('p', 1 + n, n)],
+      trajectories: n,
+    });
+    const tracks = tracksOf(layout(count), ['q', 'p'], (j) => j);
     expect(tracks).toHaveLength(MAX_PLANE_TRACKS);
     expect(tracks[0]).toEqual({ x: 1, y: 1 + count, group: 0 });
     expect(tracks.at(-1)).toEqual({ x: count, y: 2 * count, group: count - 1 });
@@ -79,6 +88,6 @@ describe('a large batch: a plane view draws a stated, even sample of its traject
     expect(batchTitle(30)).toBe('30 trajectories');
     expect(batchTitle(1)).toBeUndefined();
     // A batch within the bound is drawn whole.
-    expect(tracksOf(columns.slice(0, 1 + 10).concat(columns.slice(1 + count, 1 + count + 10)).map((c) => c.replace(/\[(\d+)\]/, '[$1]')), ['q', 'p'], 10, (j) => j)).toHaveLength(10);
+    expect(tracksOf(layout(10), ['q', 'p'], (j) => j)).toHaveLength(10);
   });
 });

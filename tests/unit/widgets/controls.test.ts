@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { canonicalEquations } from '../../../widgets/core/canonical-equations.ts';
 import { Simulation } from '../../../widgets/core/simulation.ts';
 import { DriftTracker, energyColumns } from '../../../widgets/controls/drift.ts';
-import { relativeChange } from '../../../widgets/core/invariants.ts';
+import { recordLayout, relativeChange } from '../../../widgets/core/index.ts';
 import { formatDrift, formatNumber, formatRate, formatSpeed, formatTime } from '../../../widgets/controls/format.ts';
 import { parseBound, parseDt, parseNumber } from '../../../widgets/controls/field-values.ts';
 import { SPEEDS, speedsWith } from '../../../widgets/controls/transport.ts';
@@ -64,10 +64,11 @@ describe('controls/format', () => {
 });
 
 describe('controls/drift', () => {
-  it('energyColumns(columns) finds H, or H[j] for a batch', () => {
-    expect(energyColumns(['t', 'q', 'p', 'H', 'I'])).toEqual([3]);
-    expect(energyColumns(['t', 'q[0]', 'p[0]', 'q[1]', 'p[1]', 'H[0]', 'H[1]'])).toEqual([5, 6]);
-    expect(energyColumns(['t', 'q', 'p'])).toEqual([]);
+  it('energyColumns(layout) finds H, in each trajectory of a batch', () => {
+    expect(energyColumns(recordLayout(['q', 'p'], ['H', 'I']))).toEqual([3]);
+    // t, q[0], p[0], q[1], p[1], H[0], H[1]
+    expect(energyColumns(recordLayout(['q', 'p'], ['H'], 2))).toEqual([5, 6]);
+    expect(energyColumns(recordLayout(['q', 'p'], []))).toEqual([]);
   });
 
   it('relativeChange(h, h0) is |h − h0| / |h0|, absolute when h0 = 0', () => {
@@ -79,7 +80,7 @@ describe('controls/drift', () => {
   it('DriftTracker reports the worst drift of a batch and keeps H₀ when old rows are dropped', async () => {
     const model = await canonicalEquations({ dof: 1, hamiltonian: 'p^2/2 + q^2/2' });
     const sim = new Simulation(model, { initial: [1, 0, 2, 0], dt: 0.5, capacity: 4 }); // a large dt drifts
-    const tracker = new DriftTracker(sim.record.columns);
+    const tracker = new DriftTracker(sim.record);
     tracker.start(sim.record);
     sim.run(40);
     expect(sim.record.dropped).toBeGreaterThan(0);
@@ -87,6 +88,6 @@ describe('controls/drift', () => {
     const latest = tracker.latest(sim.record)!;
     expect(latest.drift).toBeCloseTo(Math.abs(h(0) - 0.5) / 0.5, 12);
     expect(latest.worst).toBeCloseTo(Math.max(Math.abs(h(0) - 0.5) / 0.5, Math.abs(h(1) - 2) / 2), 12);
-    expect(new DriftTracker(['t', 'q', 'p']).latest(sim.record)).toBeNull();
+    expect(new DriftTracker(recordLayout(['q', 'p'], [])).latest(sim.record)).toBeNull();
   });
 });

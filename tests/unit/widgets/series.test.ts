@@ -1,9 +1,10 @@
 import { describe, expect, it } from 'vitest';
+import { recordLayout } from '../../../widgets/core/index.ts';
 import { planSeries, spread } from '../../../widgets/plots/series.ts';
 
 describe('plots/series', () => {
-  it('planSeries(columns) makes one legend entry per column but t for one trajectory', () => {
-    const plan = planSeries(['t', 'q', 'p', 'H', 'I']);
+  it('planSeries(layout) makes one legend entry per series for one trajectory', () => {
+    const plan = planSeries(recordLayout(['q', 'p'], ['H', 'I']));
     expect(plan.groups).toEqual([
       { name: 'q', columns: [1] },
       { name: 'p', columns: [2] },
@@ -13,12 +14,10 @@ describe('plots/series', () => {
     expect(plan.count).toBe(1);
   });
 
-  it('planSeries(batch columns, maxLines) groups q0[j] by name and draws at most maxLines of them', () => {
-    const columns = ['t'];
+  it('planSeries(batch layout, maxLines) groups each series over the batch and draws at most maxLines of them', () => {
     const m = 1000;
-    for (let j = 0; j < m; j++) columns.push(`x[${j}]`, `y[${j}]`);
-    for (let j = 0; j < m; j++) columns.push(`H[${j}]`);
-    const plan = planSeries(columns, 50);
+    // t, x[0], y[0], x[1], y[1] … then H[0] … H[999]
+    const plan = planSeries(recordLayout(['x', 'y'], ['H'], m), 50);
     expect(plan.groups.map((g) => g.name)).toEqual(['x', 'y', 'H']);
     expect(plan.drawn).toBe(50);
     expect(plan.count).toBe(m);
@@ -27,9 +26,9 @@ describe('plots/series', () => {
     expect(plan.groups[0].columns.at(-1)).toBe(1 + 2 * (m - 1)); // x[999]
   });
 
-  it('planSeries(columns, n, only) keeps the named entries and names an unknown one in its error', () => {
-    expect(planSeries(['t', 'q', 'p', 'H'], 10, ['H']).groups.map((g) => g.name)).toEqual(['H']);
-    expect(() => planSeries(['t', 'q', 'p'], 10, ['E'])).toThrow(/no series named "E"; the record has q, p/);
+  it('planSeries(layout, n, only) keeps the named entries and names an unknown one in its error', () => {
+    expect(planSeries(recordLayout(['q', 'p'], ['H']), 10, ['H']).groups.map((g) => g.name)).toEqual(['H']);
+    expect(() => planSeries(recordLayout(['q', 'p'], []), 10, ['E'])).toThrow(/no series named "E"; the record has q, p/);
   });
 
   it('spread(count, n) picks n evenly spaced indices including both ends', () => {

@@ -51,7 +51,7 @@ export function phasePortrait(options: PhasePortraitOptions = {}): View {
       if (pairs.length === 0) throw new Error('no pairs to draw');
       const base = { xKind: options.scale ?? 'linear', yKind: options.scale ?? 'linear', constant, equal: options.equal ?? false, extent, limit };
       const label = (pair: Pair, i: number) => options.labels?.[i] ?? pair.join(', ');
-      const tracks = (pair: Pair, i: number) => tracksOf(simulation.record.columns, pair, simulation.count, () => i);
+      const tracks = (pair: Pair, i: number) => tracksOf(simulation.record, pair, () => i);
       const title = batchTitle(simulation.count);
       if (multiples) {
         return pairs.map((pair, i): PanelSpec => ({

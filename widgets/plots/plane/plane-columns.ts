@@ -1,3 +1,4 @@
+import type { RecordLayout } from '../../core/index.ts';
 import type { Extent } from '../extent.ts';
 import type { Track } from './plane-panels.ts';
 import { spread } from '../series.ts';
@@ -28,10 +29,10 @@ export function toExtent(option: ExtentOption | undefined, what: string): Extent
  */
 export const MAX_PLANE_TRACKS = 2000;
 
-/** Column positions by name, built once per record layout: looking each of 10⁵ names up in a list of 3·10⁵ was quadratic. */
+/** Column positions by header name, built once per record layout: looking each of 10⁵ names up in a list of 3·10⁵ was quadratic. */
 const indexes = new WeakMap<readonly string[], Map<string, number>>();
 
-function indexOf(columns: readonly string[], name: string): number {
+function columnNamed(columns: readonly string[], name: string): number {
   let index = indexes.get(columns);
   if (!index) indexes.set(columns, (index = new Map(columns.map((c, i) => [c, i]))));
   return index.get(name) ?? -1;
@@ -43,26 +44,26 @@ export function drawnTrajectories(count: number): number[] {
 }
 
 /**
- * The record columns a series name stands for: the column of that exact
- * name, or, in a batch of `count` trajectories, `name[j]` for every j
- * (for the trajectories `which`, by default all).
+ * The record columns a name stands for: a series of the layout, in every
+ * trajectory (or the trajectories `which`), or one column by the name its
+ * export header gives it (`q0[3]`, trajectory 3's q0).
  */
-export function columnsOf(columns: readonly string[], name: string, count: number, which?: readonly number[]): number[] {
-  const exact = indexOf(columns, name);
+export function columnsOf(layout: RecordLayout, name: string, which?: readonly number[]): number[] {
+  const series = layout.series.find((s) => s.name === name);
+  if (series) return which ? which.map((j) => series.columns[j]) : [...series.columns];
+  const exact = columnNamed(layout.columns, name);
   if (exact > 0) return [exact];
-  if (count > 1) {
-    const all = (which ?? Array.from({ length: count }, (_, j) => j)).map((j) => indexOf(columns, `${name}[${j}]`));
-    if (all.every((c) => c > 0)) return all;
-  }
+  const { columns } = layout;
   const shown = columns.slice(1, 9).join(', ') + (columns.length > 9 ? ', …' : '');
   throw new Error(`no series named “${name}”; the record has ${shown}`);
 }
 
 /** One track per trajectory for a pair: x and y columns matched trajectory by trajectory. */
-export function tracksOf(columns: readonly string[], pair: Pair, count: number, group: (j: number) => number): Track[] {
+export function tracksOf(layout: RecordLayout, pair: Pair, group: (j: number) => number): Track[] {
+  const count = layout.trajectories;
   const which = count > 1 ? drawnTrajectories(count) : undefined;
-  const xs = columnsOf(columns, pair[0], count, which);
-  const ys = columnsOf(columns, pair[1], count, which);
+  const xs = columnsOf(layout, pair[0], which);
+  const ys = columnsOf(layout, pair[1], which);
   if (xs.length !== ys.length) {
     throw new Error(`“${pair[0]}” is ${xs.length} series and “${pair[1]}” is ${ys.length}; a pair needs as many of each`);
   }

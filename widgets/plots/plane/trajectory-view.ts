@@ -51,11 +51,10 @@ function trajectoryPanel(
   limit: PanelSpec['limit'],
 ): PanelSpec {
   const { model, count } = simulation;
-  const columns = simulation.record.columns;
   const bodies = options.bodies ?? defaultBodies(model.names, model.dof);
   if (bodies.length === 0) throw new Error('no bodies to draw');
   const byTrajectory = options.colorBy === 'trajectory' && count > 1;
-  const tracks = bodies.flatMap((body, b) => tracksOf(columns, body, count, (j) => (byTrajectory ? j % 8 : b)));
+  const tracks = bodies.flatMap((body, b) => tracksOf(simulation.record, body, (j) => (byTrajectory ? j % 8 : b)));
   const legend = byTrajectory ? [] : bodies.map((body, b) => ({ label: options.labels?.[b] ?? body.join(', '), group: b }));
   return {
     tracks,

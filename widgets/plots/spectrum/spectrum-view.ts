@@ -140,7 +140,7 @@ class SpectrumViewImpl implements SpectrumView {
       // A series the reader chose survives a restart; otherwise the chapter's choice, or the first coordinate.
       const kept = this.series !== '' && this.columns.includes(this.series) ? this.series : undefined;
       const wanted = kept ?? this.options.series ?? simulation.model.names[0];
-      this.series = this.columns[columnsOf(this.columns, wanted, simulation.count)[0]];
+      this.series = this.columns[columnsOf(simulation.record, wanted)[0]];
       this.frame.say(null);
     } catch (error) {
       this.series = '';

@@ -171,10 +171,9 @@ export class TimePlot implements View {
    * coordinates at first (each entry is many lines); the rest is a click away.
    */
   private makePlan(simulation: Simulation): SeriesPlan {
-    const { columns } = simulation.record;
-    const { count, model } = simulation;
-    const plan = planSeries(columns, this.options.trajectories ?? 50);
-    if (this.options.show) planSeries(columns, 1, this.options.show); // throws a one-line error naming an unknown series
+    const { record, count, model } = simulation;
+    const plan = planSeries(record, this.options.trajectories ?? 50);
+    if (this.options.show) planSeries(record, 1, this.options.show); // throws a one-line error naming an unknown series
     const show = this.options.show ?? (count > 1 ? model.names.slice(0, model.dof) : undefined);
     this.visible = plan.groups.map((g) => !show || show.includes(g.name));
     const note = count > plan.drawn ? `${plan.drawn} of ${count} trajectories drawn` : count > 1 ? `${count} trajectories` : undefined;
