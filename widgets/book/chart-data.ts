@@ -42,7 +42,7 @@ export function chartCsv(chart: SettledChart): string {
 }
 
 /** A short number for reading aloud: four significant digits. */
-const short = (v: number) => displayNumber(v, 4).replace(/-/g, '−');
+const short = (v: number) => displayNumber(v === 0 ? 0 : v, 4).replace(/-/g, '−'); // −0 reads as 0
 
 function extentOf(curves: readonly Curve[], coordinate: 'x' | 'y'): [number, number] | null {
   let lo = Infinity;
@@ -61,6 +61,7 @@ function countOf(s: ResolvedSeries): string {
   const points = s.curves.reduce((n, c) => n + c.x.length, 0);
   if (s.kind === 'band') return 'a shaded band';
   if (s.source === 'formula') return 'a formula curve';
+  if (s.source === 'curve') return `a parametric curve of ${points} points`;
   if (s.source === 'lines') return `${s.curves.length} lines`;
   return s.kind === 'dots' ? `${points} point${points === 1 ? '' : 's'}` : `a line of ${points} points`;
 }

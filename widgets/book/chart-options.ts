@@ -31,7 +31,8 @@ export interface ChartAxisOptions {
 
 /**
  * One series of a chart. Give exactly one of: `points` (or `x` and `y`), a
- * family of `lines`, a `formula` y(x), or a band between `lower` and `upper`.
+ * family of `lines`, a `formula` y(x), a parametric `curve` (x(s), y(s)), or
+ * a band between `lower` and `upper`.
  */
 export interface ChartSeriesOptions {
   /** the legend's name; a series without one is drawn but not listed in the legend */
@@ -46,11 +47,13 @@ export interface ChartSeriesOptions {
   lines?: readonly ChartCurve[];
   /** a formula y(x), sampled densely across the x axis (or over `from` … `to`) */
   formula?: (x: number) => number;
-  /** where the formula (or a band's function edges) starts (default: the x axis's start) */
+  /** a curve given by a parameter, s ↦ [x, y], e.g. an orbit over one period: (t) => [cos(ω t), −sin(ω t)], with `from` and `to` the parameter's range */
+  curve?: (s: number) => readonly [number, number];
+  /** where the formula (or a band's function edges) starts (default: the x axis's start); a curve's first parameter value */
   from?: number;
-  /** where the formula (or a band's function edges) ends (default: the x axis's end) */
+  /** where the formula (or a band's function edges) ends (default: the x axis's end); a curve's last parameter value */
   to?: number;
-  /** points at which a formula is sampled (default 400) */
+  /** points at which a formula or a curve is sampled (default 400) */
   samples?: number;
   /** the lower edge of a shaded band: points, or a function of x sampled like a formula */
   lower?: ChartCurve | ((x: number) => number);
@@ -89,9 +92,9 @@ export interface ChartOptions {
   series: readonly ChartSeriesOptions[];
   /** marker lines; false, null or undefined entries are skipped, so `cond && {x: …}` works */
   rules?: readonly (ChartRuleOptions | false | null | undefined)[];
-  /** height in CSS pixels (default 320); ignored with `aspect: 'equal'` */
+  /** height in CSS pixels (default 320); with `aspect: 'equal'`, the most the figure may take (the plot then narrows instead) */
   height?: number;
-  /** 'equal': one unit as long across as up, so circles stay round (linear axes) */
+  /** 'equal': one unit as long across as up, so circles stay round (linear axes); as wide as the column allows unless `height` is given */
   aspect?: 'equal';
   /** the downloaded files' name, without extension (default: from the label) */
   name?: string;
@@ -107,7 +110,7 @@ export interface ResolvedSeries {
   label: string | null;
   kind: 'line' | 'dots' | 'band';
   /** where the series came from, for the text description */
-  source: 'points' | 'lines' | 'formula' | 'band';
+  source: 'points' | 'lines' | 'formula' | 'curve' | 'band';
   /** the curves drawn: one for points and formulas, several for `lines`, [lower, upper] for a band (functions' curves are filled in by settleChart) */
   curves: Curve[];
   /** functions of x to sample into the curve of the same index: a formula, a band's function edges */
@@ -146,10 +149,12 @@ export interface ResolvedChart {
   series: ResolvedSeries[];
   rules: ResolvedRule[];
   height: number;
+  /** whether the chapter gave the height (with an equal aspect it is then a limit; otherwise the width decides) */
+  heightGiven: boolean;
   equalAspect: boolean;
 }
 
-const SERIES_KEYS = new Set(['label', 'points', 'x', 'y', 'lines', 'formula', 'from', 'to', 'samples', 'lower', 'upper', 'mark', 'color', 'dash', 'width', 'opacity', 'radius']);
+const SERIES_KEYS = new Set(['label', 'points', 'x', 'y', 'lines', 'formula', 'curve', 'from', 'to', 'samples', 'lower', 'upper', 'mark', 'color', 'dash', 'width', 'opacity', 'radius']);
 const CHART_KEYS = new Set(['label', 'x', 'y', 'series', 'rules', 'height', 'aspect', 'name']);
 const AXIS_KEYS = new Set(['label', 'domain', 'scale', 'ticks']);
 const RULE_KEYS = new Set(['x', 'y', 'label', 'faint']);
@@ -209,10 +214,11 @@ function resolveSeries(raw: unknown, i: number, nextColor: () => number): Resolv
     (raw.points !== undefined || raw.x !== undefined || raw.y !== undefined) && 'points',
     raw.lines !== undefined && 'lines',
     raw.formula !== undefined && 'formula',
+    raw.curve !== undefined && 'curve',
     (raw.lower !== undefined || raw.upper !== undefined) && 'band',
   ].filter((s): s is ResolvedSeries['source'] => !!s);
   if (given.length !== 1) {
-    throw new Error(`chart: ${at} needs exactly one of points (or x and y), lines, formula, or lower and upper${given.length ? `; it has ${given.join(' and ')}` : ''}`);
+    throw new Error(`chart: ${at} needs exactly one of points (or x and y), lines, formula, curve, or lower and upper${given.length ? `; it has ${given.join(' and ')}` : ''}`);
   }
   const source = given[0];
   let curves: Curve[] = [];
@@ -232,6 +238,14 @@ function resolveSeries(raw: unknown, i: number, nextColor: () => number): Resolv
       const missing = () => NaN;
       functions = edges.map((e) => (typeof e === 'function' ? (e as (x: number) => number) : missing));
     }
+  } else if (source === 'curve') {
+    if (typeof raw.curve !== 'function') throw new Error(`chart: ${at}.curve must be a function of a parameter giving [x, y], e.g. (t) => [cos(t), sin(t)]`);
+    const range = [raw.from, raw.to];
+    if (!range.every((v) => typeof v === 'number' && Number.isFinite(v)) || raw.from === raw.to) {
+      throw new Error(`chart: ${at}: a curve needs from and to, two different numbers: the range of its parameter`);
+    }
+    const samples = Math.round(finiteOption(`${at}.samples`, raw.samples, 400, (v) => v >= 2 && v <= 100_000, 'between 2 and 100000'));
+    curves = [sampleCurve(raw.curve as (s: number) => unknown, raw.from as number, raw.to as number, samples)];
   } else if (typeof raw.formula !== 'function') {
     throw new Error(`chart: ${at}.formula must be a function of x, e.g. (x) => x ** 2`);
   } else {
@@ -262,6 +276,28 @@ function resolveSeries(raw: unknown, i: number, nextColor: () => number): Resolv
       to: raw.to === undefined ? undefined : finiteOption(`${at}.to`, raw.to, 0, () => true, 'a number'),
     }),
   };
+}
+
+/**
+ * The points of a parametric curve at `n` even steps of its parameter from
+ * `a` to `b`; a step that throws or gives no finite [x, y] is NaN, which
+ * breaks the line there.
+ */
+export function sampleCurve(f: (s: number) => unknown, a: number, b: number, n: number): Curve {
+  const curve = { x: new Float64Array(n), y: new Float64Array(n) };
+  for (let i = 0; i < n; i++) {
+    const s = i === n - 1 ? b : a + ((b - a) * i) / (n - 1);
+    let p: unknown;
+    try {
+      p = f(s);
+    } catch {
+      p = null;
+    }
+    const ok = isArrayLike(p) && p.length >= 2 && Number.isFinite(p[0]) && Number.isFinite(p[1]);
+    curve.x[i] = ok ? Number((p as ArrayLike<number>)[0]) : NaN;
+    curve.y[i] = ok ? Number((p as ArrayLike<number>)[1]) : NaN;
+  }
+  return curve;
 }
 
 function resolveAxis(name: 'x' | 'y', raw: unknown): ResolvedAxis {
@@ -327,5 +363,6 @@ export function resolveChart(options: unknown): ResolvedChart {
   if (equalAspect && (x.scale === 'log' || y.scale === 'log')) throw new Error("chart: aspect: 'equal' needs linear axes");
   const height = finiteOption('height', options.height, 320, (v) => v >= 120 && v <= 2000, 'between 120 and 2000 pixels');
   if (options.name !== undefined && typeof options.name !== 'string') throw new Error('chart: name must be a string');
-  return { label: options.label, name: fileName((options.name as string | undefined) ?? options.label), x, y, series, rules, height, equalAspect };
+  const heightGiven = options.height !== undefined;
+  return { label: options.label, name: fileName((options.name as string | undefined) ?? options.label), x, y, series, rules, height, heightGiven, equalAspect };
 }

@@ -42,6 +42,11 @@ describe('chartSummary', () => {
     expect(text).toContain('Marked: escape at b = 1.5 (x = 1.5).');
     expect(text).not.toMatch(/NaN|Infinity/);
   });
+  it('names a parametric curve, and reads −0 as 0', () => {
+    const orbit = settleChart(resolveChart({ label: 'Orbit', series: [{ label: 'orbit', curve: (t: number) => [Math.cos(t), -Math.sin(t)], from: 0, to: Math.PI, samples: 3 }] }));
+    // (1, −0), (0, −1), (−1, −0): y runs from −1 to 0
+    expect(chartSummary(orbit)).toContain('orbit: a parametric curve of 3 points, x from −1 to 1, y from −1 to 0.');
+  });
 });
 
 describe('tableRows', () => {

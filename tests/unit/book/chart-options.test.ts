@@ -27,6 +27,28 @@ describe('resolveChart: what a cell writes, checked', () => {
     expect(c.series[0].kind).toBe('line');
   });
 
+  it('samples a parametric curve over its parameter: an orbit over one period closes on itself', () => {
+    const omega = 10;
+    const c = resolveChart({ label: 'L', series: [{ curve: (t: number) => [Math.cos(omega * t), -Math.sin(omega * t)], from: 0, to: (2 * Math.PI) / omega, samples: 101 }] });
+    const [s] = c.series;
+    expect([s.source, s.kind, s.curves[0].x.length]).toEqual(['curve', 'line', 101]);
+    const { x, y } = s.curves[0];
+    // every point on the unit circle (q² + (p/mω)² = 1 for the oscillator at unit amplitude), the last the first
+    for (let i = 0; i < x.length; i++) expect(Math.hypot(x[i], y[i])).toBeCloseTo(1, 14);
+    expect(x[100]).toBeCloseTo(x[0], 14);
+    expect(y[100]).toBeCloseTo(y[0], 14);
+    // a quarter period on: (cos π/2, −sin π/2) = (0, −1)
+    expect(x[25]).toBeCloseTo(0, 14);
+    expect(y[25]).toBeCloseTo(-1, 14);
+  });
+
+  it('breaks a curve where it gives no finite point, and asks for its parameter range', () => {
+    const c = resolveChart({ label: 'L', series: [{ curve: (s: number) => (s === 1 ? [NaN, 0] : s === 2 ? ({} as [number, number]) : [s, s * s]), from: 0, to: 3, samples: 4 }] });
+    expect(Array.from(c.series[0].curves[0].x)).toEqual([0, NaN, NaN, 3]);
+    expect(() => resolveChart({ label: 'L', series: [{ curve: (s: number) => [s, s] }] })).toThrow(/a curve needs from and to/);
+    expect(() => resolveChart({ label: 'L', series: [{ curve: [[0, 1]], from: 0, to: 1 }] })).toThrow(/curve must be a function/);
+  });
+
   it('skips false rules, so a rule can depend on a condition', () => {
     const c = resolveChart({ label: 'L', series: [], rules: [{ y: 1, label: 'c' }, false, null, { x: 2, faint: true }] });
     expect(c.rules).toEqual([
