@@ -96,15 +96,24 @@ export function angularMomentum(s: ArrayLike<number>): number {
 }
 
 /**
- * [u, v, p_u, p_v] → [ξ, η, p_ξ, p_η] with ξ ≥ 0 (one of the two square
- * roots: (ξ, η) and (−ξ, −η) are the same physical point).
+ * [u, v, p_u, p_v] → [ξ, η, p_ξ, p_η], one of the two square roots ((ξ, η)
+ * and (−ξ, −η) are the same physical point): ξ ≥ 0 for u ≥ 0, and η ≥ 0 for
+ * u < 0, v = 0. The larger of ξ² = (r + u)/2 and η² = (r − u)/2 is taken
+ * from its formula and the other from v = 2ξη, so that neither suffers the
+ * cancellation of r + u or r − u near the negative or positive u-axis.
  */
 export function toLeviCivita(s: ArrayLike<number>): Float64Array {
   const [u, v, pu, pv] = [s[0], s[1], s[2], s[3]];
   const r = Math.hypot(u, v);
-  const xi = Math.sqrt((r + u) / 2);
-  // η from v = 2ξη, or from r − u = 2η² when ξ vanishes (u ≤ 0, v = 0).
-  const eta = xi > 0 ? v / (2 * xi) : Math.sqrt((r - u) / 2);
+  let xi: number;
+  let eta: number;
+  if (u >= 0) {
+    xi = Math.sqrt((r + u) / 2);
+    eta = xi > 0 ? v / (2 * xi) : 0;
+  } else {
+    eta = (v < 0 ? -1 : 1) * Math.sqrt((r - u) / 2);
+    xi = v / (2 * eta);
+  }
   return Float64Array.of(xi, eta, 2 * xi * pu + 2 * eta * pv, -2 * eta * pu + 2 * xi * pv);
 }
 
