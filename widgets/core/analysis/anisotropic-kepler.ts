@@ -80,8 +80,9 @@ export function massRatio(system: AnisotropicKepler): number {
 /**
  * Devaney (1978, Inventiones Math. 45, 221, "Collision orbits in the
  * anisotropic Kepler problem"): for μ > 9/8 orbits can wind any number of
- * times about the heavy axis between crossings of the light one, and a
- * closed invariant set carries a full shift on infinitely many symbols.
+ * times about the heavy axis between crossings of the light one, and the
+ * orbits of a closed invariant set are coded by doubly infinite sequences of
+ * these winding numbers (symbolic dynamics).
  */
 export const DEVANEY_THRESHOLD = 9 / 8;
 
