@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { makeMapping } from '../../../widgets/plots/scale.ts';
 import { emptyExtent } from '../../../widgets/plots/extent.ts';
 import { includeRows, liftPens, makePens, traceRows, type Stroke } from '../../../widgets/plots/trace.ts';
-import { recordingSink } from './fake-context.ts';
+import { recordingSink } from '../support/fake-canvas.ts';
 
 /** Rows of [t, x, y] laid out as the record stores them. */
 function rows(points: [number, number][]): Float64Array {
