@@ -3,7 +3,7 @@
  * written out term by term as a reader would type them: the inputs for
  * measuring how the cost of building a model grows with n
  * (bench/model-build.ts) and for checking large models' derivatives
- * (tests/unit/model-build.test.ts). States are named q0…, p0…; with n = 1
+ * (tests/unit/core/expression/model-build.test.ts). States are named q0…, p0…; with n = 1
  * the compiler takes q0 and p0 as q and p.
  */
 

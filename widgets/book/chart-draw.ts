@@ -1,7 +1,7 @@
 /**
  * Paints a settled chart (chart-scale.ts) onto a canvas with the plot
- * foundation: its axes, grid and tick labels (plots/draw-axes.ts), its theme
- * (plots/view-theme.ts), then the series clipped to the plot, then the
+ * foundation: its axes, grid and tick labels (plots/axes.ts), its theme
+ * (plots/theme.ts), then the series clipped to the plot, then the
  * marker lines with their labels. Text is drawn at 11 CSS pixels or more and
  * the canvas is sized to its box, never scaled, so it reads at any width.
  */

@@ -11,7 +11,7 @@
 /** A colour of the book's series palette (the same in every plot and theme), or the text's own colours. */
 export type ChartColor = 'blue' | 'orange' | 'teal' | 'raspberry' | 'violet' | 'ochre' | 'green' | 'slate' | 'text' | 'muted';
 
-/** The palette's names, in the order of the plots' palette (plots/colors.ts). */
+/** The palette's names, in the order of the plots' palette (plots/theme.ts). */
 export const PALETTE_NAMES: readonly ChartColor[] = ['blue', 'orange', 'teal', 'raspberry', 'violet', 'ochre', 'green', 'slate'];
 
 /** A curve given by its points: `[[x, y], …]` or the two columns `{x, y}` (typed arrays welcome). */

@@ -63,7 +63,7 @@ export interface AxisReadout {
 
 /**
  * The labels of both axes of a panel, fitted to its size with the canvas's
- * own text widths (tick-labels.ts). An axis given a tick count in `style`
+ * own text widths (ticks.ts). An axis given a tick count in `style`
  * keeps its scale's own ticks and format instead (a chart's log axis).
  */
 export function panelLabels(g: CanvasRenderingContext2D, rect: Rect, mx: Mapping, my: Mapping, theme: Theme, style: Pick<AxesStyle, 'xTicks' | 'yTicks'> = {}): { x: AxisLabels; y: AxisLabels } {
@@ -230,7 +230,7 @@ export function drawYAxis(ctx: Context, box: Rect, ticks: AxisLabels, position: 
     ctx.stroke();
     ctx.globalAlpha = 1;
     ctx.fillStyle = theme.muted;
-    // squeezed rather than cut if a label is still too wide (tick-labels.ts picks labels that fit)
+    // squeezed rather than cut if a label is still too wide (ticks.ts picks labels that fit)
     if (ticks.labels[i]) ctx.fillText(ticks.labels[i], box.left - 6, y, box.left - 8);
   });
   if (ticks.offsetText) {

@@ -1,7 +1,7 @@
 /**
  * The drawing surface shared by the plots. Drawing code takes a `Context`,
  * the minimal subset of CanvasRenderingContext2D it uses, so unit tests can
- * pass a recording fake (tests/unit/widgets/fake-context.ts) instead of a
+ * pass a recording fake (tests/unit/support/fake-canvas.ts) instead of a
  * browser canvas.
  */
 

@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { makeMapping, toPixel } from '../../../widgets/plots/scale.ts';
 import { formatTick, symlogTicks, ticksFor } from '../../../widgets/plots/ticks.ts';
 
-describe('axis-scale', () => {
+describe('plots/scale: mappings', () => {
   it('toPixel(makeMapping("linear", domain, range), v) agrees with the d3 scale', () => {
     const m = makeMapping('linear', [-3, 7], [400, 20]);
     for (const v of [-3, -1.5, 0, 2, 7, 12]) expect(toPixel(m, v)).toBeCloseTo(m.scale(v), 10);

@@ -50,7 +50,7 @@ function check(lo: number, hi: number): void {
   }
 }
 
-describe('plots/tick-labels', () => {
+describe('plots/ticks', () => {
   it('linear labels never touch, and read back as their values, for ranges at every decade from 1e-12 to 1e15', () => {
     for (let e = -12; e <= 15; e++) {
       const u = 10 ** e;

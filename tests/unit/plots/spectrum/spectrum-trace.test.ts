@@ -3,7 +3,7 @@ import { makeMapping } from '../../../../widgets/plots/scale.ts';
 import { traceSeries } from '../../../../widgets/plots/spectrum/spectrum-plot.ts';
 import { recordingSink } from '../../support/fake-canvas.ts';
 
-describe('spectrum-trace', () => {
+describe('spectrum-plot: traceSeries', () => {
   it('traceSeries(sink, x, y, end, mx, my) connects points a pixel or more apart one by one', () => {
     const { sink, calls } = recordingSink();
     const x = Float64Array.from([0, 1, 2, 3]);
