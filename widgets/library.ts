@@ -60,10 +60,10 @@ export function createLibrary(page: PageContext, cellSignal: () => AbortSignal |
     /** simulator({hamiltonian, initial, …}) → Promise of the widget's element */
     simulator: () => import('./simulator/simulator.ts').then((m) => (options: Parameters<typeof m.simulator>[0]) => m.simulator(options, build())),
     /** Views (each has an `.element`), for composing a simulator by hand */
-    timePlot: () => import('./plots/time-plot.ts').then((m) => m.timePlot),
-    trajectoryView: () => import('./plots/trajectory-view.ts').then((m) => m.trajectoryView),
-    phasePortrait: () => import('./plots/phase-portrait.ts').then((m) => m.phasePortrait),
-    spectrumView: () => import('./plots/spectrum-view.ts').then((m) => m.spectrumView),
+    timePlot: () => import('./plots/time/time-plot.ts').then((m) => m.timePlot),
+    trajectoryView: () => import('./plots/plane/trajectory-view.ts').then((m) => m.trajectoryView),
+    phasePortrait: () => import('./plots/plane/phase-portrait.ts').then((m) => m.phasePortrait),
+    spectrumView: () => import('./plots/spectrum/spectrum-view.ts').then((m) => m.spectrumView),
     /** theoryCheck({label, measured, predicted, errors: {formula, integration, measurement}, validity, missing, relative, unit, method, formula}) → element */
     theoryCheck: () => import('./book/theory-check.ts').then((m) => m.theoryCheck),
     /** equations(model) → H and Hamilton's equations, typeset */
