@@ -41,7 +41,7 @@ export type Catalogue = Record<string, () => Promise<unknown>>;
  * running, which aborts when that cell is defined again (cells/runtime.ts):
  * a model build started by a cell stops when an edit makes it obsolete.
  */
-export function createLibrary(page: PageContext, cellSignal: () => AbortSignal | undefined = () => undefined): Catalogue {
+export function createLibrary(page: PageContext, cellSignal: () => AbortSignal | undefined = () => undefined) {
   // The core's modules one by one, not its index: a page then loads only the parts its cells use.
   const spectrum = () => import('./core/spectrum.ts');
   const invariants = () => import('./core/invariants.ts');
@@ -70,8 +70,8 @@ export function createLibrary(page: PageContext, cellSignal: () => AbortSignal |
     equations: () => typesetting().then((t) => t.equations),
     /** tex(source, {display}) → typeset LaTeX */
     tex: () => typesetting().then((t) => t.tex),
-    /** chart({label, x, y, series, rules}) → a figure: points, lines, formula curves and bands on linear or log axes, with legend, data table, PNG and CSV */
-    chart: () => import('./book/chart.ts').then((m) => m.chart),
+    /** chart({label, x, y, series, rules}) → a figure: points, lines, formula curves and bands on linear or log axes, with legend, data table, PNG and CSV; a cell that runs again updates its figure in place */
+    chart: () => import('./book/chart.ts').then((m) => (options: Parameters<typeof m.chart>[0]) => m.chart(options, cellSignal())),
     /** table({columns, rows, caption}) → a table of numbers that scrolls on a phone; rows may be a function, read again every `refresh` seconds */
     table: () => import('./book/table.ts').then((m) => m.table),
     /** stabilityChart({hamiltonian, params, x, y, frequencyParam, boundaries, onSelect}) → Floquet chart computed in a worker */
@@ -112,5 +112,5 @@ export function createLibrary(page: PageContext, cellSignal: () => AbortSignal |
     deflectionFrom: () => analysis().then((m) => m.deflectionFrom),
     outgoingDirection: () => analysis().then((m) => m.outgoingDirection),
     angleBetween: () => analysis().then((m) => m.angleBetween),
-  };
+  } satisfies Catalogue;
 }

@@ -66,6 +66,30 @@ test('with reduced motion asked for, simulators wait for Play', async () => {
   await page.close();
 });
 
+test('with reduced motion asked for, a chart its cell animates holds its first picture until Play', async () => {
+  const page = await site.context.newPage();
+  await page.emulateMedia({ reducedMotion: 'reduce' });
+  await page.goto(`${site.origin}/introduction/`);
+  await cellsReady(page);
+  const figure = cell(page, 'cell-5').locator('[data-widget="chart"][data-ready]');
+  await figure.scrollIntoViewIfNeeded();
+  const toggle = figure.locator('.pb-chart-tools button[data-motion]');
+  await toggle.waitFor();
+  assert.equal(await toggle.textContent(), 'Play');
+  const state = () => figure.evaluate((f) => f.chart.series[1].curves[0].x[0]);
+  const held = await state();
+  // The generator keeps yielding (its inspected value changes); the figure does not move.
+  const phase = () => page.locator('[data-cell="phase"] [data-cell-output]').textContent();
+  const before = await phase();
+  await page.waitForFunction((text) => document.querySelector('[data-cell="phase"] [data-cell-output]')?.textContent !== text, before);
+  await page.waitForTimeout(300);
+  assert.equal(await state(), held);
+  await toggle.click();
+  assert.equal(await toggle.textContent(), 'Pause');
+  await page.waitForFunction((q) => document.querySelector('[data-cell="cell-5"] [data-widget="chart"]').chart.series[1].curves[0].x[0] !== q, held);
+  await page.close();
+});
+
 test('display math wider than a phone’s column can be reached by keyboard and says that it scrolls', async () => {
   const page = await site.context.newPage();
   await page.setViewportSize({ width: 360, height: 800 });

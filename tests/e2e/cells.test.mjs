@@ -19,22 +19,76 @@ test('cells show their first values: numbers inspected, html as DOM', async () =
   assert.equal(await outputOf(page, 'omega'), 'omega = 10');
   assert.equal(await outputOf(page, 'period'), PERIOD_OF(10));
   assert.equal(await cell(page, 'cell-3').locator('[data-cell-output] > p strong').textContent(), '0.628');
-  assert.equal(await cell(page, 'cell-5').locator('[data-cell-output] > svg circle').count(), 2);
+  // The phase-space figure is the book's chart: the orbit and the state now, on the unit circle.
+  const figure = cell(page, 'cell-5').locator('[data-cell-output] > [data-widget="chart"][data-ready]');
+  await figure.waitFor();
+  const drawn = await figure.evaluate((f) => ({
+    role: f.querySelector('canvas').getAttribute('role'),
+    name: f.querySelector('canvas').getAttribute('aria-label'),
+    series: f.chart.series.map((s) => ({ label: s.label, source: s.source, kind: s.kind, x: Array.from(s.curves[0].x), y: Array.from(s.curves[0].y) })),
+  }));
+  assert.equal(drawn.role, 'img');
+  assert.equal(drawn.name, "The oscillator's state in phase space");
+  const [orbit, now] = drawn.series;
+  assert.equal(orbit.source, 'curve');
+  assert.equal(orbit.kind, 'line');
+  // The orbit over one period: q² + (p/mω)² = 1, the oscillator's level curve of H at unit amplitude, closed.
+  assert.ok(orbit.x.every((q, i) => Math.abs(q * q + orbit.y[i] * orbit.y[i] - 1) < 1e-12), orbit.label);
+  assert.ok(Math.abs(orbit.x.at(-1) - orbit.x[0]) < 1e-12 && Math.abs(orbit.y.at(-1) - orbit.y[0]) < 1e-12, 'the orbit closes');
+  assert.equal(now.kind, 'dots');
+  assert.equal(now.x.length, 1);
+  assert.ok(Math.abs(now.x[0] ** 2 + now.y[0] ** 2 - 1) < 1e-12, `the state (${now.x[0]}, ${now.y[0]}) lies on the orbit`);
   assert.deepEqual(problems, []);
   await page.close();
 });
 
-test('generator cells animate', async () => {
+/** The state the phase-space chart shows now, and the figure showing it (marked, so a new figure would be seen). */
+const stateShown = (page) =>
+  page.evaluate(() => {
+    const f = document.querySelector('[data-cell="cell-5"] [data-widget="chart"]');
+    const c = f?.chart.series[1].curves[0];
+    return { q: c?.x[0], p: c?.y[0], same: f?.dataset.marked === '', count: document.querySelectorAll('[data-cell="cell-5"] [data-cell-output] > *').length };
+  });
+
+test('generator cells animate: the chart fed by one is updated in place, frame after frame', async () => {
   const { page, problems } = await openChapter(site, '/introduction/');
   const first = await outputOf(page, 'phase');
   assert.match(first, /^phase = \{t: /);
   await waitForOutput(page, 'phase', (text) => text !== first);
-  const dot = cell(page, 'cell-5').locator('svg circle').nth(1);
-  const x0 = await dot.getAttribute('cx');
+  await cell(page, 'cell-5').locator('[data-widget="chart"][data-ready]').evaluate((f) => (f.dataset.marked = ''));
+  const start = await stateShown(page);
+  // Some frames later the point has moved along the circle, in the same figure (no figure rebuilt per frame).
   await page.waitForFunction(
-    (before) => document.querySelector('[data-cell="cell-5"] svg circle:nth-of-type(2)')?.getAttribute('cx') !== before,
-    x0,
+    (before) => {
+      const c = document.querySelector('[data-cell="cell-5"] [data-widget="chart"]')?.chart.series[1].curves[0];
+      return c && c.x[0] !== before.q && c.y[0] !== before.p;
+    },
+    start,
   );
+  await page.waitForTimeout(500);
+  const later = await stateShown(page);
+  assert.equal(later.same, true, 'the same figure, updated in place');
+  assert.equal(later.count, 1);
+  assert.ok(Math.abs(later.q ** 2 + later.p ** 2 - 1) < 1e-12);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('an animated chart offers Pause: paused, it holds its picture while the cell runs on; Play resumes', async () => {
+  const { page, problems } = await openChapter(site, '/introduction/');
+  const toggle = cell(page, 'cell-5').locator('.pb-chart-tools button[data-motion]');
+  await toggle.waitFor();
+  assert.equal(await toggle.textContent(), 'Pause');
+  await toggle.click();
+  assert.equal(await toggle.textContent(), 'Play');
+  const held = await stateShown(page);
+  const phase = await outputOf(page, 'phase');
+  await waitForOutput(page, 'phase', (text) => text !== phase);
+  await page.waitForTimeout(300);
+  assert.deepEqual(await stateShown(page), held);
+  await toggle.click();
+  assert.equal(await toggle.textContent(), 'Pause');
+  await page.waitForFunction((before) => document.querySelector('[data-cell="cell-5"] [data-widget="chart"]')?.chart.series[1].curves[0].x[0] !== before, held.q);
   assert.deepEqual(problems, []);
   await page.close();
 });

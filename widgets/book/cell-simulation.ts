@@ -22,4 +22,19 @@ export class CellSimulation extends Simulation {
     this.#taken = wanted;
     return super.run(steps);
   }
+
+  /**
+   * Runs `steps` steps as `run` does, in slices with a pause between them
+   * in which the page draws and answers the reader: a check that integrates
+   * for a second keeps the page alive, and the cell holds only its physics
+   * (`await run.runAsync(steps)`). Stops early at an error (`run.error`).
+   */
+  async runAsync(steps: number, slice = 20_000): Promise<number> {
+    const end = this.steps + steps;
+    while (this.steps < end && !this.error) {
+      this.run(Math.min(slice, end - this.steps));
+      await new Promise((resolve) => setTimeout(resolve, 0));
+    }
+    return this.steps;
+  }
 }

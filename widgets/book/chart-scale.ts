@@ -6,10 +6,10 @@
  * Pure, so it is unit-tested in Node.
  */
 import { scaleLog } from 'd3-scale';
-import type { Mapping } from '../plots/axis-scale.ts';
-import { formatTick } from '../plots/axis-scale.ts';
-import type { Rect } from '../plots/draw-axes.ts';
-import { MARGIN } from '../plots/draw-axes.ts';
+import type { Mapping } from '../plots/scale.ts';
+import { formatTick } from '../plots/ticks.ts';
+import type { Rect } from '../plots/axes.ts';
+import { MARGIN } from '../plots/axes.ts';
 import { scaleLinear, type NumberScale } from '../plots/scale.ts';
 import type { Curve, ResolvedAxis, ResolvedChart } from './chart-options.ts';
 
@@ -120,11 +120,14 @@ export function settleChart(chart: ResolvedChart): SettledChart {
 /** The plot's rectangle and the figure's height at a width in CSS pixels. */
 export function layoutChart(chart: SettledChart, width: number): { rect: Rect; height: number } {
   const w = Math.max(200, width);
-  const plotWidth = w - CHART_MARGIN.left - CHART_MARGIN.right;
+  let plotWidth = w - CHART_MARGIN.left - CHART_MARGIN.right;
   let plotHeight = chart.height - CHART_MARGIN.top - CHART_MARGIN.bottom;
   if (chart.equalAspect) {
     const ratio = Math.abs(chart.yDomain[1] - chart.yDomain[0]) / Math.abs(chart.xDomain[1] - chart.xDomain[0]);
-    plotHeight = Math.min(1200, Math.max(80, plotWidth * ratio));
+    // A given height caps the plot (a small figure in a wide column): the plot then narrows to keep the units equal.
+    const most = chart.heightGiven ? Math.min(1200, plotHeight) : 1200;
+    plotHeight = Math.min(most, Math.max(80, plotWidth * ratio));
+    if (chart.heightGiven) plotWidth = Math.min(plotWidth, plotHeight / ratio);
   }
   return {
     rect: { left: CHART_MARGIN.left, top: CHART_MARGIN.top, width: plotWidth, height: plotHeight },

@@ -84,4 +84,14 @@ describe('axes', () => {
     const { rect } = layoutChart(c, 640);
     expect(rect.height / 24).toBeCloseTo(rect.width / 40, 9);
   });
+  it('an equal aspect with a given height keeps to it: the plot narrows instead', () => {
+    const c = settleChart(resolveChart({ label: 'L', aspect: 'equal', height: 280, x: { domain: [-1.3, 1.3] }, y: { domain: [-1.3, 1.3] }, series: [] }));
+    const { rect, height } = layoutChart(c, 700);
+    expect(height).toBe(280);
+    expect(rect.width).toBeCloseTo(rect.height, 9);
+    expect(rect.width).toBeLessThan(700 / 2);
+    // At a phone's width the column decides, and the units stay equal.
+    const narrow = layoutChart(c, 200).rect;
+    expect(narrow.height).toBeCloseTo(narrow.width, 9);
+  });
 });
