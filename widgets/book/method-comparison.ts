@@ -97,14 +97,17 @@ function figures(result: ComparisonResult, checks: ComparisonChecks, options: Me
       x: { label: 'time t' },
       // The largest in each of 400 stretches of the run: an oscillating error keeps its peaks at any width.
       y: { label: '|ΔH/H₀|, largest per 1/400 of the run', scale: 'log' },
-      series: runs.map((r) => ({
-        label: NAMES[r.method],
-        color: COLORS[r.method],
-        x: r.drift.binned.t.filter((_, i) => r.drift.binned.e[i] > 0),
-        y: r.drift.binned.e.filter((e) => e > 0),
-        mark: 'line' as const,
-        width: 1.5,
-      })),
+      // An energy error of exactly 0 (a conserved H kept to the last bit) has no place on a log axis.
+      series: runs
+        .filter((r) => r.drift.binned.e.some((e) => e > 0))
+        .map((r) => ({
+          label: NAMES[r.method],
+          color: COLORS[r.method],
+          x: r.drift.binned.t.filter((_, i) => r.drift.binned.e[i] > 0),
+          y: r.drift.binned.e.filter((e) => e > 0),
+          mark: 'line' as const,
+          width: 1.5,
+        })),
     }),
   );
   out.push(
@@ -142,14 +145,16 @@ function figures(result: ComparisonResult, checks: ComparisonChecks, options: Me
       if (Number.isFinite(slope)) series.push({ color: COLORS[study.method], formula: (h) => Math.exp(my + slope * (Math.log(h) - mx)), dash: true, width: 1 });
       rows.push([NAMES[study.method], rounded(slope, 4), fit.predicted]);
     }
-    out.push(
-      chart({
-        label: `Global error at T = ${rounded(order.T, 6)} against the step`,
-        x: { label: 'step h', scale: 'log' },
-        y: { label: `error at T (against ${order.referenceName})`, scale: 'log' },
-        series,
-      }),
-    );
+    if (series.length) {
+      out.push(
+        chart({
+          label: `Global error at T = ${rounded(order.T, 6)} against the step`,
+          x: { label: 'step h', scale: 'log' },
+          y: { label: `error at T (against ${order.referenceName})`, scale: 'log' },
+          series,
+        }),
+      );
+    }
     out.push(table({ caption: 'Fitted slopes of log error against log h', columns: ['method', { label: 'fitted order', digits: 4 }, 'theory'], rows }));
   }
   return out;
@@ -204,7 +209,11 @@ export function methodComparison(options: MethodComparisonOptions, build: BuildO
         const notes = result.runs.filter(failed).map((r) => `${NAMES[r.method]}: ${r.error}`);
         status.textContent = `${methods.length} methods, ${steps} steps each${notes.length ? `. Not run — ${notes.join('; ')}` : ''}.`;
         root.dataset.steps = String(steps);
-        root.append(...figures(result, checks, options));
+        try {
+          root.append(...figures(result, checks, options));
+        } catch (error) {
+          return fail((error as Error).message);
+        }
         root.dataset.ready = '';
         resolve(checks);
       }
