@@ -33,10 +33,12 @@ export function prefetchWidgets(cell: Element): void {
   for (const load of [() => import('./simulator/simulator.ts'), ...views.map((v) => VIEW_MODULES[v])]) load().catch(() => undefined);
 }
 
-/** The catalogue: each name's loader, called once, when a cell first names it. */
-export type Catalogue = Record<string, () => Promise<unknown>>;
-
 /**
+ * The catalogue: each name's loader, called once, when a cell first names it
+ * (cells/builtins.ts takes it as its `Loaders`). Its return type is left to
+ * inference so that every entry keeps the type of what it loads, which the
+ * VS Code extension reads for completions (vscode/build/catalogue.ts).
+ *
  * `cellSignal` is the cell machinery's signal for the cell whose code is
  * running, which aborts when that cell is defined again (cells/runtime.ts):
  * a model build started by a cell stops when an edit makes it obsolete.
@@ -112,5 +114,5 @@ export function createLibrary(page: PageContext, cellSignal: () => AbortSignal |
     deflectionFrom: () => analysis().then((m) => m.deflectionFrom),
     outgoingDirection: () => analysis().then((m) => m.outgoingDirection),
     angleBetween: () => analysis().then((m) => m.angleBetween),
-  } satisfies Catalogue;
+  };
 }

@@ -57,11 +57,9 @@ function parametersOf(signature: ts.Signature, checker: ts.TypeChecker, at: ts.N
   });
 }
 
-/** The value a `lazy(() => …)` entry loads: the awaited return type of its one property's loader. */
-function loadedType(type: ts.Type, checker: ts.TypeChecker, at: ts.Node): ts.Type {
-  const [loader] = type.getProperties();
-  if (!loader) return type;
-  const [signature] = checker.getTypeOfSymbolAtLocation(loader, at).getCallSignatures();
+/** The value an entry loads: every entry is a loader, `() => import(…).then(…)`, and this is the awaited type of what it returns. */
+function loadedType(type: ts.Type, checker: ts.TypeChecker): ts.Type {
+  const [signature] = type.getCallSignatures();
   if (!signature) return type;
   return checker.getAwaitedType(signature.getReturnType()) ?? signature.getReturnType();
 }
@@ -70,7 +68,7 @@ function describeEntry(property: ts.PropertyAssignment, checker: ts.TypeChecker)
   const name = property.name.getText();
   const symbol = checker.getSymbolAtLocation(property.name);
   const doc = symbol ? docOf(symbol, checker) : '';
-  const value = loadedType(checker.getTypeAtLocation(property.initializer), checker, property);
+  const value = loadedType(checker.getTypeAtLocation(property.initializer), checker);
   const [construct] = value.getConstructSignatures();
   if (construct) {
     const parameters = parametersOf(construct, checker, property);

@@ -8,7 +8,7 @@
  */
 import { pageContext } from '../../../widgets/book/page-data.ts';
 import { createBuiltins } from '../../../widgets/cells/builtins.ts';
-import { Notebook } from '../../../widgets/cells/runtime.ts';
+import { currentCellSignal, Notebook } from '../../../widgets/cells/runtime.ts';
 import { createLibrary } from '../../../widgets/library.ts';
 import type { CellReport, CheckResult, PreviewMessage } from '../shared/messages.ts';
 import { BlockList } from './block-list.ts';
@@ -32,7 +32,7 @@ export class ChapterPage {
   constructor(article: HTMLElement, post: (message: PreviewMessage) => void) {
     this.#post = post;
     this.blocks = new BlockList(article);
-    this.#notebook = new Notebook(createBuiltins(article, createLibrary(pageContext([]))));
+    this.#notebook = new Notebook(createBuiltins(article, createLibrary(pageContext([]), currentCellSignal)));
   }
 
   render(version: number, text: string): void {
