@@ -2,21 +2,18 @@
  * The numbers behind a chart's picture: the domain each axis shows (fitted
  * to the data when the chapter gives none), formula curves sampled across
  * it, the plot's rectangle at a given width, and the axes as d3 scales with
- * their ticks and labels (linear: plots/scale.ts; log: d3-scale's scaleLog).
+ * their ticks and labels (plots/scale.ts, linear or log).
  * Pure, so it is unit-tested in Node.
  */
-import { scaleLog } from 'd3-scale';
-import type { Mapping } from '../plots/scale.ts';
+import { MARGIN, type Rect } from '../plots/axes.ts';
+import { makeMapping, scaleFor, scaleLinear, type Mapping, type NumberScale } from '../plots/scale.ts';
 import { formatTick } from '../plots/ticks.ts';
-import type { Rect } from '../plots/axes.ts';
-import { MARGIN } from '../plots/axes.ts';
-import { scaleLinear, type NumberScale } from '../plots/scale.ts';
 import type { Curve, ResolvedAxis, ResolvedChart } from './chart-options.ts';
 
 /** Space around the plot: the foundation's margins, less the top strip it keeps for a canvas legend (the chart's legend is text below). */
 export const CHART_MARGIN = { left: MARGIN.left + 6, right: MARGIN.right + 4, top: 12, bottom: MARGIN.bottom + 4 };
 
-/** Tick labels are drawn at this size in CSS pixels (plots/draw-axes.ts), and the canvas is never scaled down. */
+/** Tick labels are drawn at this size in CSS pixels (plots/axes.ts), and the canvas is never scaled down. */
 export const AXIS_FONT_PX = 11;
 
 /** Every value of a list of curves, one coordinate. */
@@ -155,40 +152,32 @@ export function tickCount(axis: ResolvedAxis, domain: readonly [number, number],
   return decades >= 2 ? Math.min(decades, budget) : budget;
 }
 
+/** `base` with other ticks or another tick format, the rest (domain, range, invert) its own. */
+function retick(base: NumberScale, ticks: NumberScale['ticks'], tickFormat: NumberScale['tickFormat']): NumberScale {
+  const s = ((v: number) => base(v)) as NumberScale;
+  Object.assign(s, base, { ticks, tickFormat });
+  s.domain = base.domain;
+  s.range = base.range;
+  s.invert = base.invert;
+  return s;
+}
+
 /**
- * An axis as the plot foundation's Mapping (a d3 scale with ticks and tick
- * labels), for plots/draw-axes.ts. A log axis is d3's scaleLog, labelled
- * by the foundation's formatTick (0.01, 1, 100, 10⁻¹¹); given ticks replace
- * d3's choice.
+ * An axis as the plot foundation's Mapping (a scale with ticks and tick
+ * labels), for plots/axes.ts. A log axis has d3's log ticks, labelled by
+ * the foundation's formatTick (0.01, 1, 100, 10⁻¹¹); given ticks replace
+ * the scale's choice.
  */
 export function axisMapping(axis: ResolvedAxis, domain: readonly [number, number], range: readonly [number, number]): Mapping {
-  let scale: NumberScale;
-  if (axis.scale === 'log') {
-    const log = scaleLog().domain(domain).range(range);
-    const s = ((v: number) => log(v)) as NumberScale;
-    s.domain = (() => log.domain()) as NumberScale['domain'];
-    s.range = (() => log.range()) as NumberScale['range'];
-    s.invert = (p) => log.invert(p);
-    s.ticks = (count = 10) => log.ticks(count);
-    // d3 takes a function as the specifier too (its types say string): the labels are then the foundation's.
-    s.tickFormat = (count = 10) => log.tickFormat(count, formatTick as unknown as string);
-    s.nice = () => s;
-    scale = s;
-  } else {
-    scale = scaleLinear().domain(domain).range(range);
-  }
+  const base = scaleFor(axis.scale, domain, range);
+  // d3 takes a function as the specifier too (its types say string): the labels are then the foundation's.
+  let scale = axis.scale === 'log' ? retick(base, base.ticks, (count = 10) => base.tickFormat(count, formatTick as unknown as string)) : base;
   if (axis.ticks) {
     const [lo, hi] = [Math.min(...domain), Math.max(...domain)];
     const fixed = axis.ticks.filter((v) => v >= lo && v <= hi && (axis.scale === 'linear' || v > 0));
-    const base = scale;
-    const s = ((v: number) => base(v)) as NumberScale;
-    Object.assign(s, base, { ticks: () => fixed, tickFormat: () => fixedFormat });
-    s.domain = base.domain;
-    s.range = base.range;
-    s.invert = base.invert;
-    scale = s;
+    scale = retick(scale, () => fixed, () => fixedFormat);
   }
-  return { kind: 'linear', c: 1, a: 0, b: 0, scale };
+  return makeMapping(axis.scale, domain, range, 1, scale);
 }
 
 /** Whether a point can be drawn on these axes (finite, and positive on a log axis). */

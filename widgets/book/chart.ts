@@ -22,7 +22,7 @@
  */
 import { downloadBlob, downloadText, onBackground, pngBlob } from '../data/download.ts';
 import { pixelRatio, sizeCanvas } from '../plots/canvas.ts';
-import { readTheme, sameTheme, type Theme } from '../plots/theme.ts';
+import { readTheme, sameTheme, watchTheme as onThemeChange, type Theme } from '../plots/theme.ts';
 import { chartCsv, chartSummary, namedCurves, tableRows, TABLE_ROWS } from './chart-data.ts';
 import { colorOf, drawChart, drawLegendRows, type ChartContext } from './chart-draw.ts';
 import { resolveChart, type ChartOptions } from './chart-options.ts';
@@ -46,11 +46,10 @@ let watching = false;
 function watchTheme(redraw: () => boolean): void {
   for (const r of redraws) if (!r()) redraws.delete(r);
   redraws.add(redraw);
-  if (watching || typeof window === 'undefined') return;
+  if (watching) return;
   watching = true;
-  const all = () => redraws.forEach((r) => r() || redraws.delete(r));
-  window.matchMedia?.('(prefers-color-scheme: dark)').addEventListener?.('change', all);
-  new MutationObserver(all).observe(document.documentElement, { attributes: true, attributeFilter: ['data-theme', 'class', 'style'] });
+  // One watch of the page for every chart on it, for as long as the page lives.
+  onThemeChange(() => redraws.forEach((r) => r() || redraws.delete(r)));
 }
 
 let described = 0;
