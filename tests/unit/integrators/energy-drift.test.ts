@@ -172,6 +172,14 @@ describe('the drift checks on the pendulum, across the regime', { timeout: 60_00
     expect(verdict.reason).toMatch(/no drift shows/);
   });
 
+  it('dt = 2.5, beyond Verlet’s stability limit ωh < 2: outside validity, never an error the check cannot state', async () => {
+    const dt = 2.5;
+    const verlet = await run(PENDULUM, [2, 0], 'verlet', dt, 2000);
+    const check = boundedCheck(energyDrift(verlet.e, dt), { ...context('verlet', dt, verlet.rate), symplectic: true, separable: true });
+    for (const term of Object.values(check.errors)) expect(term.value === null || term.value >= 0 || Number.isNaN(term.value)).toBe(true);
+    expect(judge(check).verdict).toBe('outside');
+  });
+
   it('an H that depends on t is outside validity', async () => {
     const dt = 0.1;
     const rk = await run('p^2/2 - (1 + 0.1*cos(t))*cos(q)', [2, 0], 'rk38', dt, 10_000);

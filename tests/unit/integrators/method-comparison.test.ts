@@ -15,6 +15,7 @@
  * Prince's as their steppers count them.
  */
 import { describe, expect, it } from 'vitest';
+import { pendulumPeriod } from '../../../widgets/core/analysis/pendulum.ts';
 import { compiledModelFor } from '../../../widgets/core/canonical-equations.ts';
 import { methodChoice, type MethodName } from '../../../widgets/core/integrators/methods.ts';
 import { judge } from '../../../widgets/book/check-verdict.ts';
@@ -100,6 +101,15 @@ describe('runComparison on the harmonic oscillator', { timeout: 60_000 }, () => 
     closed.studies.forEach((study, i) =>
       study.errors.forEach((e, j) => expect(Math.abs(referenced.studies[i].errors[j] - e)).toBeLessThan(1e-11 + 1e-6 * e)),
     );
+  });
+
+  it('a long run that fails (the midpoint rule at a step too large for Newton) leaves the order study, whose runs are its own, to be judged', async () => {
+    // The pendulum p²/2 − ω² cos q from q = 1 over one exact period, 4K(sin ½)/ω.
+    const T = pendulumPeriod(1, 0, OMEGA);
+    const result = runComparison(await request(1.5, 200, { T, steps: [0.05, 0.025, 0.0125, 0.00625], exact: [1, 0] }, 'p^2/2 - omega^2*cos(q)'));
+    const midpoint = result.runs.find((r) => r.method === 'midpoint')!;
+    expect(failed(midpoint) && midpoint.error).toMatch(/Newton/);
+    expect(judge(new ComparisonChecks(result).order('midpoint')).verdict).toBe('agrees');
   });
 
   it('finds an H that depends on t, and reports a method that cannot run in its place', async () => {

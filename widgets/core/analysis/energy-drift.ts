@@ -224,7 +224,8 @@ export function boundedCheck(drift: EnergyDrift, context: DriftContext & { sympl
     errors: {
       formula: { value: 0, why: 'none: H̃ is conserved up to exponentially small terms for exponentially long times (HLW Thm IX.8.1)' },
       integration: { value: floor / drift.first, why: `rounding, 2⁻⁵³ per step as a random walk over ${drift.steps} steps` },
-      measurement: { value: sampling / (1 - sampling), why: `sampling the error's oscillation once a step misses its peak by up to (Ω·h)²/2 = ${two(sampling)} of it` },
+      // Beyond Ω·h = √2 the estimate means nothing (and the premise Ω·h ≤ 1 has failed already).
+      measurement: { value: sampling < 1 ? sampling / (1 - sampling) : null, why: `sampling the error's oscillation once a step misses its peak by up to (Ω·h)²/2 = ${two(sampling)} of it` },
     },
     method: `largest |ΔH/H₀| over t > T/2 over that over t ≤ T/2: ${two(drift.second)} / ${two(drift.first)}, ${drift.steps} steps of ${context.method}`,
     formula: 'bounded: no growth (HLW Thm IX.8.1)',
