@@ -1,17 +1,16 @@
+import { h as el } from '../../controls/dom.ts';
 import type { Simulation } from '../../core/index.ts';
-import type { View } from '../view.ts';
 import { pixelRatio } from '../canvas.ts';
-import { readTheme, watchTheme, type Theme } from '../theme.ts';
-import { clampEnd, listenScroll, ScrubBar } from './time-scroll.ts';
-import { Legend } from './legend.ts';
-import { planSeries, type SeriesPlan } from '../series.ts';
-import { el, WINDOWS } from './time-plot-parts.ts';
-import type { TimeRenderer, UpdateResult } from './time-renderer.ts';
-import { timePlotHeight } from '../sizes.ts';
-import { TimeStage } from './time-stage.ts';
 import { PlotTable, TEXT_INTERVAL_MS } from '../plot-table.ts';
-import { rangeText, recordTable, rowsOver, show, type TableData } from '../table-data.ts';
 import type { SignedKind } from '../scale.ts';
+import { planSeries, type SeriesPlan } from '../series.ts';
+import { timePlotHeight } from '../sizes.ts';
+import { rangeText, recordTable, rowsOver, show, type TableData } from '../table-data.ts';
+import { readTheme, type Theme, watchTheme } from '../theme.ts';
+import type { TimeRenderer, UpdateResult } from './time-renderer.ts';
+import { clampEnd, listenScroll, ScrubBar } from './time-scroll.ts';
+import { TimeStage, WINDOWS } from './time-stage.ts';
+import type { View } from '../view.ts';
 
 export interface TimePlotOptions {
   /** legend entries shown at first, e.g. ['q', 'p']; the others start hidden (default: all; a batch: its coordinates) */
@@ -364,4 +363,67 @@ export class TimePlot implements View {
 /** A time plot View: the scrolling graph of every state component and derived series against t. */
 export function timePlot(options: TimePlotOptions = {}): TimePlot {
   return new TimePlot(options);
+}
+
+/**
+ * A legend of toggle buttons, one per series: a colour swatch and the name.
+ * Clicking (or Enter/Space on) an entry hides or shows its series; the
+ * pressed state is exposed as aria-pressed.
+ */
+export interface LegendEntry {
+  name: string;
+  color: string;
+  visible: boolean;
+}
+
+export class Legend {
+  readonly element: HTMLElement;
+  private readonly buttons: HTMLButtonElement[] = [];
+
+  constructor(
+    entries: readonly LegendEntry[],
+    private readonly onToggle: (index: number, visible: boolean) => void,
+    note?: string,
+  ) {
+    this.element = document.createElement('div');
+    this.element.className = 'pb-legend';
+    this.element.setAttribute('role', 'group');
+    this.element.setAttribute('aria-label', 'Series (click to hide or show)');
+    entries.forEach((entry, i) => {
+      const button = document.createElement('button');
+      button.type = 'button';
+      button.className = 'pb-legend-entry';
+      const swatch = document.createElement('span');
+      swatch.className = 'pb-swatch';
+      swatch.setAttribute('aria-hidden', 'true');
+      const label = document.createElement('span');
+      label.textContent = entry.name;
+      button.append(swatch, label);
+      button.title = `Hide or show ${entry.name}`;
+      button.addEventListener('click', () => {
+        const visible = button.getAttribute('aria-pressed') !== 'true';
+        this.set(i, visible);
+        this.onToggle(i, visible);
+      });
+      this.buttons.push(button);
+      this.element.append(button);
+      this.recolor(i, entry.color);
+      this.set(i, entry.visible);
+    });
+    if (note) {
+      const span = document.createElement('span');
+      span.className = 'pb-legend-note';
+      span.textContent = note;
+      this.element.append(span);
+    }
+  }
+
+  set(index: number, visible: boolean): void {
+    this.buttons[index]?.setAttribute('aria-pressed', String(visible));
+  }
+
+  recolor(index: number, color: string): void {
+    const swatch = this.buttons[index]?.querySelector<HTMLElement>('.pb-swatch');
+    if (swatch) swatch.style.background = color;
+  }
 }

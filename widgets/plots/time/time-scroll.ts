@@ -1,4 +1,4 @@
-import { el } from './time-plot-parts.ts';
+import { h as el } from '../../controls/dom.ts';
 
 /** What scrolling a time plot back needs from it. */
 export interface Scrollable {

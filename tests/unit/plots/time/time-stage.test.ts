@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import type { Theme } from '../../../../widgets/plots/theme.ts';
-import { drawTimeFrame, plotBox } from '../../../../widgets/plots/time/time-plot-parts.ts';
+import { drawTimeFrame, plotBox } from '../../../../widgets/plots/time/time-stage.ts';
 import { formatPower } from '../../../../widgets/plots/ticks.ts';
 import { scaleFor } from '../../../../widgets/plots/scale.ts';
 import { FakeContext } from '../../support/fake-canvas.ts';
