@@ -22,7 +22,7 @@
  *   preservation of the return map in (σ, π).
  */
 import { describe, expect, it } from 'vitest';
-import { keplerOrbit } from '../../../widgets/core/analysis/kepler.ts';
+import { keplerOrbit } from '../../../../widgets/core/analysis/kepler.ts';
 import {
   PAPER_INITIAL,
   PAPER_K,
@@ -35,11 +35,11 @@ import {
   regularisedJacobian,
   relativeMotion,
   toLeviCivita,
-} from '../../../widgets/core/analysis/anisotropic-kepler.ts';
-import { keplerLyapunov, keplerSection, maxReturn, regularisedOrbit, regularisedStart, sampleInterval, sectionLaunch } from '../../../widgets/core/analysis/anisotropic-kepler-flow.ts';
-import { compileModel } from '../../../widgets/core/compile-model.ts';
-import { dormandPrince } from '../../../widgets/core/integrators/dormand-prince.ts';
-import { rk38 } from '../../../widgets/core/rk38.ts';
+} from '../../../../widgets/core/analysis/anisotropic-kepler.ts';
+import { keplerLyapunov, keplerSection, maxReturn, regularisedOrbit, regularisedStart, sampleInterval, sectionLaunch } from '../../../../widgets/core/analysis/anisotropic-kepler-flow.ts';
+import { compileModel } from '../../../../widgets/core/compile-model.ts';
+import { dormandPrince } from '../../../../widgets/core/integrators/dormand-prince.ts';
+import { rk38 } from '../../../../widgets/core/rk38.ts';
 
 const paper = relativeMotion(1.5);
 const paperEnergy = keplerEnergy(paper.system, paper.state);

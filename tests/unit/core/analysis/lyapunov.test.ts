@@ -8,11 +8,11 @@
  * Galgani & Strelcyn 1976) reproduces.
  */
 import { describe, expect, it } from 'vitest';
-import { compileModel } from '../../../widgets/core/compile-model.ts';
-import { harmonicOscillator, henonHeiles } from '../../../widgets/core/analysis/henon-heiles.ts';
-import { largestLyapunov } from '../../../widgets/core/analysis/lyapunov.ts';
-import { launchState } from '../../../widgets/core/analysis/poincare.ts';
-import { rk38 } from '../../../widgets/core/rk38.ts';
+import { compileModel } from '../../../../widgets/core/compile-model.ts';
+import { harmonicOscillator, henonHeiles } from '../../../../widgets/core/analysis/henon-heiles.ts';
+import { largestLyapunov } from '../../../../widgets/core/analysis/lyapunov.ts';
+import { launchState } from '../../../../widgets/core/analysis/poincare.ts';
+import { rk38 } from '../../../../widgets/core/rk38.ts';
 
 describe('the Hénon–Heiles Jacobian', () => {
   it('equals the exact one the expression route derives symbolically (widgets/core/expression/jacobian.ts)', async () => {
