@@ -1,6 +1,7 @@
 import type { Peak, Spectrum } from '../../core/index.ts';
 import { type AxisReadout, crisp, drawAxes, drawLegend, fontOf, leftMarginFor, type LegendItem, MARGIN, panelLabels, type Rect } from '../axes.ts';
 import { makeMapping, type Mapping, toPixel } from '../scale.ts';
+import { ColumnDecimator, traceColumns } from '../decimate.ts';
 import { seriesColor, type Theme } from '../theme.ts';
 import type { PathSink } from '../trace.ts';
 
@@ -124,57 +125,30 @@ function drawPeakMarks(g: CanvasRenderingContext2D, rect: Rect, mx: Mapping, my:
   g.restore();
 }
 
+/** One decimator for every trace, grown to the longest series seen: a spectrum is redrawn a few times a second. */
+let decimator: ColumnDecimator | null = null;
+
 /**
  * Traces y against x for indices [0, end] as one polyline, connecting
  * adjacent points (the paper's §5.2). Where several points fall in one pixel
  * column, as when a long series is shown up to Nyquist, the column is drawn
- * as its first value, its range and its last value: the same picture as
- * every point, at a few segments per pixel.
+ * as its first value, its range and its last value (decimate.ts): the same
+ * picture as every point, at a few segments per pixel. Points that do not
+ * map to the canvas (a log axis's zero) are passed over.
  */
 export function traceSeries(sink: PathSink, x: ArrayLike<number>, y: ArrayLike<number>, end: number, mx: Mapping, my: Mapping): number {
-  let segments = 0;
-  let started = false;
-  let column = NaN;
-  let cx = 0;
-  let first = 0;
-  let last = 0;
-  let min = 0;
-  let max = 0;
-  const emit = (px: number, py: number): void => {
-    if (started) {
-      sink.lineTo(px, py);
-      segments++;
-    } else {
-      sink.moveTo(px, py);
-      started = true;
-    }
-  };
-  const flush = (): void => {
-    if (Number.isNaN(column)) return;
-    emit(cx, first);
-    if (min !== max) {
-      emit(cx, min);
-      emit(cx, max);
-      emit(cx, last);
-    }
-  };
   const n = Math.min(end + 1, x.length, y.length);
+  if (!decimator || decimator.capacity < n) decimator = new ColumnDecimator(1, Math.max(64, n), () => {});
+  const d = decimator;
+  d.reset();
   for (let k = 0; k < n; k++) {
     const px = toPixel(mx, x[k]);
     const py = toPixel(my, y[k]);
     if (!Number.isFinite(px) || !Number.isFinite(py)) continue;
-    const c = Math.floor(px);
-    if (c !== column) {
-      flush();
-      column = c;
-      cx = px;
-      first = last = min = max = py;
-    } else {
-      last = py;
-      if (py < min) min = py;
-      if (py > max) max = py;
-    }
+    d.column(Math.floor(px), px);
+    d.value(0, py);
   }
-  flush();
-  return segments;
+  // Trace before end() flushes: the decimator's sink is a no-op, the columns are read here.
+  d.column(NaN);
+  return traceColumns(sink, d, 0, 0, NaN, NaN);
 }

@@ -1,7 +1,7 @@
 import type { TrajectoryRecord } from '../../core/index.ts';
 import { fit, grow, settle } from './autoscale.ts';
 import type { Context, Surface, SurfaceFactory } from '../canvas.ts';
-import { ColumnDecimator, pendingRange, strokeColumns } from './decimate.ts';
+import { ColumnDecimator, pendingRange, strokeColumns } from '../decimate.ts';
 import { ScrollBuffer, SLOTS, viewLeft } from './scroll-buffer.ts';
 import { makeMapping, toPixel, type Domain, type Mapping, type SignedKind } from '../scale.ts';
 

@@ -1,4 +1,5 @@
-import type { Context } from '../canvas.ts';
+import type { Context } from './canvas.ts';
+import type { PathSink } from './trace.ts';
 
 /**
  * Min/max decimation by pixel column: however many samples fall into one
@@ -20,6 +21,8 @@ export class ColumnDecimator {
   count = 0;
   /** absolute column index of pending column i */
   readonly columns: Float64Array;
+  /** where pending column i is drawn across: its first sample's pixel, or the column's centre */
+  readonly at: Float64Array;
   /** per pending column i and series s, at i·series + s: NaN `first` marks a gap */
   readonly first: Float64Array;
   readonly min: Float64Array;
@@ -30,6 +33,7 @@ export class ColumnDecimator {
   readonly penY: Float64Array;
 
   private current = NaN;
+  private currentAt = NaN;
   private readonly cFirst: Float64Array;
   private readonly cMin: Float64Array;
   private readonly cMax: Float64Array;
@@ -44,6 +48,7 @@ export class ColumnDecimator {
   ) {
     const n = series * capacity;
     this.columns = new Float64Array(capacity);
+    this.at = new Float64Array(capacity);
     this.first = new Float64Array(n);
     this.min = new Float64Array(n);
     this.max = new Float64Array(n);
@@ -56,11 +61,15 @@ export class ColumnDecimator {
     this.cLast = new Float64Array(series);
   }
 
-  /** Starts the next sample, in pixel column c (non-decreasing from sample to sample). */
-  column(c: number): void {
+  /**
+   * Starts the next sample, in pixel column c (non-decreasing from sample to
+   * sample); a new column is drawn at `x`, by default its centre.
+   */
+  column(c: number, x = c + 0.5): void {
     if (c === this.current) return;
     if (this.current === this.current) this.commit();
     this.current = c;
+    this.currentAt = x;
   }
 
   /** Adds series s's value at the current sample, in pixels; non-finite values leave a gap. */
@@ -102,6 +111,7 @@ export class ColumnDecimator {
     const { series: n } = this;
     const at = this.count * n;
     this.columns[this.count] = this.current;
+    this.at[this.count] = this.currentAt;
     for (let s = 0; s < n; s++) {
       this.first[at + s] = this.cFirst[s];
       this.min[at + s] = this.cMin[s];
@@ -141,46 +151,63 @@ export function pendingRange(d: ColumnDecimator, c0: number, c1: number): [numbe
 }
 
 /**
- * Strokes series s of pending columns [i0, i1) as one path, shifted left by
- * `offset` columns, at pixel centres (x + 0.5), joined onto the column before
- * i0 (or the pen). The caller sets the style.
+ * Traces series s of pending columns [i0, i1) into `sink`, each column at
+ * `at[i] − shift`, joined onto (joinX, joinY) unless joinY is NaN: its first
+ * value, its range and its last value, the same picture as every sample. A
+ * subpath that is still a single point gets a 1-pixel dash when it ends, so
+ * that it shows. Returns the segments drawn.
  */
-export function strokeColumns(ctx: Context, d: ColumnDecimator, s: number, offset: number, i0 = 0, i1 = d.count): void {
-  const { series: n, columns, first, min, max, last } = d;
-  const before = (i0 - 1) * n + s;
-  const penX = i0 > 0 ? columns[i0 - 1] : d.penX[s];
-  const penY = i0 > 0 ? (first[before] === first[before] ? last[before] : NaN) : d.penY[s];
-  let down = penY === penY;
-  // a subpath that is still a single point gets a 1-pixel dash when it ends, so it shows
+export function traceColumns(sink: PathSink, d: ColumnDecimator, s: number, shift: number, joinX: number, joinY: number, i0 = 0, i1 = d.count): number {
+  const { series: n, at, first, min, max, last } = d;
+  let down = joinY === joinY;
+  let segments = 0;
   let lone = false;
   let lx = 0;
   let ly = 0;
-  ctx.beginPath();
-  if (down) ctx.moveTo(penX - offset + 0.5, penY);
+  const line = (x: number, y: number) => {
+    sink.lineTo(x, y);
+    segments++;
+  };
+  if (down) sink.moveTo(joinX, joinY);
   for (let i = i0; i < i1; i++) {
     const k = i * n + s;
     const f = first[k];
     if (f !== f) {
-      if (lone) ctx.lineTo(lx + 1, ly);
+      if (lone) line(lx + 1, ly);
       lone = down = false;
       continue;
     }
-    const x = columns[i] - offset + 0.5;
+    const x = at[i] - shift;
     const lo = min[k];
     const hi = max[k];
     const l = last[k];
-    if (down) ctx.lineTo(x, f);
-    else ctx.moveTo(x, f);
+    if (down) line(x, f);
+    else sink.moveTo(x, f);
     lone = !down && !(lo < hi);
     lx = x;
     ly = f;
     if (lo < hi) {
-      if (lo !== f) ctx.lineTo(x, lo);
-      ctx.lineTo(x, hi);
-      if (l !== hi) ctx.lineTo(x, l);
+      if (lo !== f) line(x, lo);
+      line(x, hi);
+      if (l !== hi) line(x, l);
     }
     down = true;
   }
-  if (lone) ctx.lineTo(lx + 1, ly);
+  if (lone) line(lx + 1, ly);
+  return segments;
+}
+
+/**
+ * Strokes series s of pending columns [i0, i1) as one path, shifted left by
+ * `offset` columns, at pixel centres, joined onto the column before i0 (or
+ * the pen). The caller sets the style.
+ */
+export function strokeColumns(ctx: Context, d: ColumnDecimator, s: number, offset: number, i0 = 0, i1 = d.count): void {
+  const { series: n, columns, first, last } = d;
+  const before = (i0 - 1) * n + s;
+  const penX = i0 > 0 ? columns[i0 - 1] : d.penX[s];
+  const penY = i0 > 0 ? (first[before] === first[before] ? last[before] : NaN) : d.penY[s];
+  ctx.beginPath();
+  traceColumns(ctx, d, s, offset, penX - offset + 0.5, penY, i0, i1);
   ctx.stroke();
 }

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { ColumnDecimator, strokeColumns } from '../../../../widgets/plots/time/decimate.ts';
-import { FakeContext } from '../../support/fake-canvas.ts';
+import { ColumnDecimator, strokeColumns } from '../../../widgets/plots/decimate.ts';
+import { FakeContext } from '../support/fake-canvas.ts';
 
 /** A decimator whose sink strokes every series into `ctx` at offset 0. */
 function setup(series: number, capacity = 64): { d: ColumnDecimator; ctx: FakeContext; flushes: number[] } {
