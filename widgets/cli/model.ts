@@ -9,7 +9,7 @@
  * its model from the same recipe, so all run the same generated code: the
  * numbers are the same whichever thread computes a trajectory.
  */
-import { canonicalEquations, type CompiledModel, compiledModelFor, DEFAULT_METHOD, InputError, isFunctionSource, type MethodChoice, type Model, modelFromCompiled, type OpaqueHamiltonian, type Stepper, type VectorField } from '../core/index.ts';
+import { canonicalEquations, type CompiledModel, compiledModelFor, DEFAULT_METHOD, firstEvaluation, InputError, isFunctionSource, type MethodChoice, type Model, modelFromCompiled, type OpaqueHamiltonian, type Stepper, type VectorField } from '../core/index.ts';
 import { functionFromArgument } from './js-source.ts';
 import { diskModelStore, modelCacheDirectory } from './model-cache.ts';
 
@@ -117,34 +117,24 @@ function describe(value: unknown): string {
 }
 
 /**
- * Evaluates the model once at an initial state, so that a name error in a
- * JS function, H returning something other than a number, or a vector field
- * that leaves a component unwritten, is reported before any output.
+ * Evaluates the model once at an initial state (core's firstEvaluation), so
+ * that a name error in a JS function, H returning something other than a
+ * number, or a vector field that leaves a component unwritten, is reported
+ * before any output. H is looked at before the equations, whose failure in
+ * the H routes is H's; a NaN of H is the physics and not reported here.
  */
 export function checkEvaluates(model: Model, initial: ArrayLike<number>, t0 = 0): void {
-  const x = Float64Array.from(initial);
-  const rate = new Float64Array(model.dim);
-  const field = model.route === 'vector-field';
-  let value: unknown;
-  try {
-    value = model.hamiltonian?.(t0, x, 0);
-  } catch (error) {
-    if (error instanceof InputError) throw error;
-    throw new InputError(`H fails at t = ${t0}: ${(error as Error).message}`);
+  const faults = firstEvaluation(model, initial, t0);
+  const fault = faults.find((f) => f.part === 'H' && f.reason !== 'NaN') ?? faults.find((f) => f.part === 'equations');
+  if (!fault) return;
+  if (fault.reason === 'threw') {
+    if (fault.error instanceof InputError) throw fault.error;
+    const what = fault.part === 'equations' && model.route === 'vector-field' ? 'the vector field' : 'H';
+    throw new InputError(`${what} fails at t = ${t0}: ${(fault.error as Error)?.message ?? String(fault.error)}`);
   }
-  if (model.hamiltonian && typeof value !== 'number') throw new InputError(`H must return a number, but returns ${describe(value)} at t = ${t0}`);
-  rate.fill(NaN);
-  try {
-    model.field(t0, x, rate);
-  } catch (error) {
-    if (error instanceof InputError) throw error;
-    throw new InputError(`${field ? 'the vector field' : 'H'} fails at t = ${t0}: ${(error as Error).message}`);
-  }
-  // A Hamiltonian's NaN is the physics (bodies that meet) and is reported as a blow-up; a vector field's may be a component it forgot.
-  const unset = field ? rate.findIndex((v) => !Number.isFinite(v)) : -1;
-  if (unset >= 0) {
-    throw new InputError(
-      `the vector field gives no finite dx/dt for ${model.names[unset]} (dxdt[${unset}]) at t = ${t0}; it must write every component: ${FIELD_SHAPE}`,
-    );
+  if (fault.reason === 'not a number') throw new InputError(`H must return a number, but returns ${describe(fault.value)} at t = ${t0}`);
+  if (fault.reason === 'unset') {
+    const k = fault.component;
+    throw new InputError(`the vector field gives no finite dx/dt for ${model.names[k]} (dxdt[${k}]) at t = ${t0}; it must write every component: ${FIELD_SHAPE}`);
   }
 }

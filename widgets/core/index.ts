@@ -70,6 +70,7 @@ export { MAX_SEED } from './dataset/philox.ts';
 export { everyKSteps, listedTimes, type SampleTimes, stepsTo } from './dataset/sample-times.ts';
 export { BlowUpError, InputError } from './errors.ts';
 export { type ExportMeta, methodMeta } from './export-meta.ts';
+export { type EvaluationFault, firstEvaluation } from './first-evaluation.ts';
 export { checkName, stateNames } from './expression/names.ts';
 export { applyMethod } from './integrators/apply.ts';
 export { DEFAULT_METHOD, methodChoice, type MethodChoice, type MethodName } from './integrators/methods.ts';

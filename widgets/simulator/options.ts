@@ -1,5 +1,5 @@
 import {
-  applyMethod, canonicalEquations, capacityFor, DEFAULT_METHOD, InputError, MAX_BATCH, MAX_DOF, MAX_DT, MAX_SPEED, methodChoice, MIN_DT, outside,
+  applyMethod, canonicalEquations, capacityFor, DEFAULT_METHOD, firstEvaluation, InputError, MAX_BATCH, MAX_DOF, MAX_DT, MAX_SPEED, methodChoice, MIN_DT, outside,
   Simulation, type BuildOptions, type DerivedSeries, type HamiltonianSpec, type MethodChoice, type Model,
 } from '../core/index.ts';
 import type { PhasePortraitOptions } from '../plots/plane/phase-portrait.ts';
@@ -377,20 +377,18 @@ function wrap(name: string, f: DerivedFunction, model: Model): DerivedSeries {
   };
 }
 
-/** Evaluates H and the derived series once, so a mistake is reported now rather than as NaN later. */
+/**
+ * Evaluates the equations, H and the derived series once (core's
+ * firstEvaluation), so a mistake is reported now rather than as NaN later.
+ * At the start of a simulator a NaN H is a mistake too (log(q) at q < 0); a
+ * value that is not a number is read as a number, as the record does.
+ */
 function checkEvaluates(model: Model, initial: Float64Array, derived: readonly DerivedSeries[]): void {
-  const rate = new Float64Array(model.dim);
-  const check = (what: string, f: () => unknown): void => {
-    try {
-      const v = f();
-      if (typeof v === 'number' && Number.isNaN(v)) throw new Error('it is NaN');
-    } catch (error) {
-      throw fail(`${what} at the initial state: ${oneLine(error)}`);
-    }
-  };
-  check('Hamilton’s equations fail', () => model.field(0, initial, rate));
-  if (model.hamiltonian) check('H fails', () => model.hamiltonian!(0, initial, 0));
-  for (const d of derived) check(`the derived series ${d.name} fails`, () => d.evaluate(0, initial, 0));
+  const fault = firstEvaluation(model, initial, 0, derived).find((f) => f.reason !== 'not a number');
+  if (!fault) return;
+  const what = fault.part === 'equations' ? 'Hamilton’s equations fail' : fault.part === 'H' ? 'H fails' : `the derived series ${fault.name} fails`;
+  const why = fault.reason === 'threw' ? oneLine(fault.error) : fault.reason === 'NaN' ? 'it is NaN' : `the vector field writes no finite rate for ${model.names[fault.component]}`;
+  throw fail(`${what} at the initial state: ${why}`);
 }
 
 function isList(v: unknown): v is ArrayLike<unknown> {
