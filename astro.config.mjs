@@ -25,6 +25,18 @@ function lazyChunk(id) {
 }
 
 /**
+ * Rollup's `moduleSideEffects`: false for the core's modules, which are pure.
+ * A module of the core that nothing uses is then dropped even when it is
+ * reached through the core's front door (widgets/core/index.ts), so that
+ * importing one name from the index never brings the rest of the core into a
+ * page's first load or a worker.
+ * @param {string} id
+ */
+function coreIsPure(id) {
+  return !/[\\/]widgets[\\/]core[\\/]/.test(id);
+}
+
+/**
  * Takes KaTeX's @font-face rules out of its stylesheet: src/lib/fonts.ts
  * declares the same faces with the book's loading rules (font-display
  * optional, nothing on a slow connection) instead of KaTeX's `block`, which
@@ -77,10 +89,11 @@ export default defineConfig({
   vite: {
     ...(outDir ? { cacheDir: `${outDir}/.vite-cache` } : {}),
     // Workers (the stability chart's) load mathjs lazily, so they need ES modules to split chunks.
-    worker: { format: 'es' },
+    worker: { format: 'es', rollupOptions: { treeshake: { moduleSideEffects: coreIsPure } } },
     plugins: [katexWithoutFontFaces()],
     build: {
       rollupOptions: {
+        treeshake: { moduleSideEffects: coreIsPure },
         output: {
           manualChunks: lazyChunk,
           // Many small chunks cost a round trip each on a slow network (six at a time over HTTP/1.1):
