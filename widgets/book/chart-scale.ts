@@ -6,7 +6,7 @@
  * Pure, so it is unit-tested in Node.
  */
 import { MARGIN, type Rect } from '../plots/axes.ts';
-import { makeMapping, scaleFor, scaleLinear, type Mapping, type NumberScale } from '../plots/scale.ts';
+import { makeMapping, scaleFor, scaleLinear, scaleLog, type Mapping, type NumberScale } from '../plots/scale.ts';
 import { formatTick } from '../plots/ticks.ts';
 import type { Curve, ResolvedAxis, ResolvedChart } from './chart-options.ts';
 
@@ -169,7 +169,7 @@ function retick(base: NumberScale, ticks: NumberScale['ticks'], tickFormat: Numb
  * the scale's choice.
  */
 export function axisMapping(axis: ResolvedAxis, domain: readonly [number, number], range: readonly [number, number]): Mapping {
-  const base = scaleFor(axis.scale, domain, range);
+  const base = axis.scale === 'log' ? scaleLog().domain(domain).range(range) : scaleFor(axis.scale, domain, range);
   // d3 takes a function as the specifier too (its types say string): the labels are then the foundation's.
   let scale = axis.scale === 'log' ? retick(base, base.ticks, (count = 10) => base.tickFormat(count, formatTick as unknown as string)) : base;
   if (axis.ticks) {

@@ -1,8 +1,17 @@
 import { describe, expect, it } from 'vitest';
-import { makeMapping, toPixel } from '../../../widgets/plots/scale.ts';
+import { makeMapping, scaleLog, toPixel } from '../../../widgets/plots/scale.ts';
 import { formatTick, symlogTicks, ticksFor } from '../../../widgets/plots/ticks.ts';
 
 describe('plots/scale: mappings', () => {
+  it('toPixel(makeMapping("log", domain, range, 1, scaleLog()), v) agrees with d3 scaleLog, and a log axis must bring its scale', () => {
+    const scale = scaleLog().domain([1e-3, 1e3]).range([300, 0]);
+    const m = makeMapping('log', [1e-3, 1e3], [300, 0], 1, scale);
+    for (const v of [1e-3, 0.02, 1, 7, 1e3]) expect(toPixel(m, v)).toBeCloseTo(scale(v), 9);
+    // Six decades over 300 px: 50 px a decade.
+    expect(toPixel(m, 1) - toPixel(m, 10)).toBeCloseTo(50, 9);
+    expect(() => makeMapping('log', [1, 10], [0, 1])).toThrow(/scaleLog/);
+  });
+
   it('toPixel(makeMapping("linear", domain, range), v) agrees with the d3 scale', () => {
     const m = makeMapping('linear', [-3, 7], [400, 20]);
     for (const v of [-3, -1.5, 0, 2, 7, 12]) expect(toPixel(m, v)).toBeCloseTo(m.scale(v), 10);
