@@ -20,6 +20,7 @@
  * A figure updated frame after frame offers Pause, and waits for Play when
  * the reader's system asks for reduced motion, as the simulators do.
  */
+import { prefersReducedMotion } from '../controls/dom.ts';
 import { downloadBlob, downloadText, onBackground, pngBlob } from '../data/download.ts';
 import { pixelRatio, sizeCanvas } from '../plots/canvas.ts';
 import { readTheme, sameTheme, watchTheme as onThemeChange, type Theme } from '../plots/theme.ts';
@@ -127,9 +128,6 @@ function dataView(current: () => SettledChart): { element: HTMLDetailsElement; s
   };
   return { element: details, stale };
 }
-
-/** The reader's system asks for reduced motion (as the simulators read it, simulator/mount.ts). */
-const reducedMotion = () => typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
 
 /** The in-place update of each figure chart() made, for the next run of the cell that made it. */
 const updaters = new WeakMap<HTMLElement, (settled: SettledChart) => void>();
@@ -311,7 +309,7 @@ function newFigure(first: SettledChart): HTMLElement {
     const now = performance.now();
     const moving = motion.update(now);
     // A reader who asks for reduced motion sees the picture held from the first frame-on-frame update, until Play.
-    const hold = calm.update(now) && reducedMotion() && !offered();
+    const hold = calm.update(now) && prefersReducedMotion() && !offered();
     if ((moving || hold) && !offered()) {
       tools.prepend(toggle);
       if (hold) {

@@ -58,3 +58,8 @@ export function setFieldError(input: HTMLInputElement, message: HTMLElement, err
   if (error) input.setAttribute('aria-invalid', 'true');
   else input.removeAttribute('aria-invalid');
 }
+
+/** Whether the reader's system asks for reduced motion: animated widgets then wait for Play. */
+export function prefersReducedMotion(): boolean {
+  return typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
+}

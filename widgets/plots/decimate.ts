@@ -88,9 +88,14 @@ export class ColumnDecimator {
 
   /** Completes the current column (even if more samples may land in it later) and flushes the queue. */
   end(): void {
+    this.close();
+    if (this.count > 0) this.flush();
+  }
+
+  /** Completes the current column without flushing: the pending columns are then all there is to draw. */
+  close(): void {
     if (this.current === this.current) this.commit();
     this.current = NaN;
-    if (this.count > 0) this.flush();
   }
 
   /** Lifts every pen: the next samples do not join onto what was drawn before. */

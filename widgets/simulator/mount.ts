@@ -1,5 +1,5 @@
 import type { Model, Simulation } from '../core/index.ts';
-import { h } from '../controls/dom.ts';
+import { h, prefersReducedMotion } from '../controls/dom.ts';
 import { Readouts } from '../controls/readouts.ts';
 import { Transport } from '../controls/transport.ts';
 import { DataPanel } from '../data/data-panel.ts';
@@ -118,7 +118,7 @@ export function mount(
   transport.setPlaying(false, false);
   driver.requestDraw();
   // A reader whose system asks for reduced motion starts each simulator themselves.
-  const reducedMotion = typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
+  const reducedMotion = prefersReducedMotion();
   if (reducedMotion) root.dataset.reducedMotion = '';
   if (options.autoplay !== false && !reducedMotion) driver.play();
 

@@ -148,7 +148,7 @@ export function traceSeries(sink: PathSink, x: ArrayLike<number>, y: ArrayLike<n
     d.column(Math.floor(px), px);
     d.value(0, py);
   }
-  // Trace before end() flushes: the decimator's sink is a no-op, the columns are read here.
-  d.column(NaN);
+  // All columns stay pending (the capacity holds every point), so they are traced here rather than flushed.
+  d.close();
   return traceColumns(sink, d, 0, 0, NaN, NaN);
 }
