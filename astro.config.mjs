@@ -4,25 +4,7 @@ import mdx from '@astrojs/mdx';
 import remarkMath from 'remark-math';
 import rehypeKatex from 'rehype-katex';
 import { remarkCells, CELL_CODE_LANGUAGE } from './src/lib/remark-cells.mjs';
-
-/**
- * Names the lazily loaded chunks so the first page load can be checked for
- * their absence (tests/e2e/lazy.test.mjs): CodeMirror and its Lezer parsers
- * go to `editor`, the Observable parser and acorn go to `parser`.
- *
- * Only modules with no dependency shared with the page's boot code may be
- * listed: Rollup pulls a manual chunk's unassigned dependencies into it, so
- * listing widgets/cells/cell-source.ts would drag spec.ts (used at boot) into
- * `parser` and make every page load it.
- * @param {string} id
- * @returns {string | undefined}
- */
-function lazyChunk(id) {
-  if (/[\\/]node_modules[\\/](@codemirror|@lezer|style-mod|w3c-keyname|crelt)[\\/]/.test(id)) return 'editor';
-  if (/[\\/]widgets[\\/]cells[\\/]editor\.ts$/.test(id)) return 'editor';
-  if (/[\\/]node_modules[\\/](@observablehq[\\/]parser|acorn|acorn-walk)[\\/]/.test(id)) return 'parser';
-  return undefined;
-}
+import { bookChunks } from './src/lib/chunks.mjs';
 
 /**
  * Rollup's `moduleSideEffects`: false for the core's modules, which are pure.
@@ -92,12 +74,13 @@ export default defineConfig({
     worker: { format: 'es', rollupOptions: { treeshake: { moduleSideEffects: coreIsPure } } },
     plugins: [katexWithoutFontFaces()],
     build: {
+      sourcemap: !!process.env.PHASEBOOK_SOURCEMAP,
       rollupOptions: {
         treeshake: { moduleSideEffects: coreIsPure },
         output: {
-          manualChunks: lazyChunk,
-          // Many small chunks cost a round trip each on a slow network (six at a time over HTTP/1.1):
-          // chunks under 20 kB are merged into those that always load with them.
+          manualChunks: bookChunks(),
+          // The book's modules are all grouped (src/lib/chunks.mjs); this merges the small pieces Rollup
+          // cuts from third-party code loaded on demand, each of which would cost a round trip.
           experimentalMinChunkSize: 20_000,
         },
       },

@@ -107,3 +107,29 @@ test('a chapter without cells loads no cell code', async () => {
   assert.deepEqual(scripts(requests), []);
   await page.close();
 });
+
+/** The chunk a script URL names (src/lib/chunks.mjs groups the book's code by what loads it together). */
+const chunkOf = (url) => new URL(url).pathname.split('/').pop().split('.')[0];
+
+test('the boot chunk imports no other chunk: everything a widget needs comes when a cell asks for it', () => {
+  const html = readFileSync(join(DIST, 'kepler', 'index.html'), 'utf8');
+  const entries = [...html.matchAll(/<script type="module" src="([^"]+)"/g)].map((m) => m[1]);
+  assert.equal(entries.length, 1, `one script per chapter page, found ${entries.join(', ')}`);
+  const boot = readFileSync(join(DIST, entries[0]), 'utf8');
+  assert.deepEqual([...boot.matchAll(/(?:^|[;}\n])\s*import\s*(?:[\w${},\s*]+from\s*)?["']([^"']+)["']/g)].map((m) => m[1]), []);
+  assert.ok(/import\(["']\.\/simulator\.[\w-]+\.js["']\)/.test(boot) || /["']\.\/simulator\.[\w-]+\.js["']/.test(boot), 'the simulator loads on demand');
+});
+
+test('a link to a simulator fetches the simulator and its views, and no other widget, the compiler, or the share code', async () => {
+  const page = await site.context.newPage();
+  const { problems, requests } = watchPage(page);
+  await page.goto(`${site.origin}/kepler/#cell-stars`);
+  await page.locator('#cell-stars [data-widget="simulator"][data-ready]').waitFor({ timeout: 30_000 });
+  await page.waitForTimeout(500);
+  const chunks = scripts(requests).map(chunkOf);
+  for (const wanted of ['simulator', 'plots', 'time-plot', 'plane-views', 'model']) assert.ok(chunks.includes(wanted), `${wanted} in ${chunks.join(', ')}`);
+  const unwanted = ['chart', 'table', 'theory-check', 'poincare-section', 'stability-chart', 'method-comparison', 'analysis', 'compiler', 'share-ui', 'mathjs-instance', 'katex', 'editor', 'parser'];
+  assert.deepEqual(chunks.filter((name) => unwanted.includes(name)), []);
+  assert.deepEqual(problems, []);
+  await page.close();
+});

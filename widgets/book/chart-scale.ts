@@ -169,9 +169,7 @@ function retick(base: NumberScale, ticks: NumberScale['ticks'], tickFormat: Numb
  * the scale's choice.
  */
 export function axisMapping(axis: ResolvedAxis, domain: readonly [number, number], range: readonly [number, number]): Mapping {
-  const base = axis.scale === 'log' ? scaleLog().domain(domain).range(range) : scaleFor(axis.scale, domain, range);
-  // d3 takes a function as the specifier too (its types say string): the labels are then the foundation's.
-  let scale = axis.scale === 'log' ? retick(base, base.ticks, (count = 10) => base.tickFormat(count, formatTick as unknown as string)) : base;
+  let scale = axis.scale === 'log' ? scaleLog(formatTick).domain(domain).range(range) : scaleFor(axis.scale, domain, range);
   if (axis.ticks) {
     const [lo, hi] = [Math.min(...domain), Math.max(...domain)];
     const fixed = axis.ticks.filter((v) => v >= lo && v <= hi && (axis.scale === 'linear' || v > 0));

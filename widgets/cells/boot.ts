@@ -13,7 +13,7 @@
  *
  * A page opened from a shared link (`#share=…`, share-format.ts) runs over an
  * in-memory store holding the link's edits as unrun drafts, apart from the
- * reader's own saved edits (share-session.ts, share-ui.ts).
+ * reader's own saved edits (share-session.ts, share-ui.ts, loaded then).
  */
 import { PAGE_DATA_ATTRIBUTE, pageContext } from '../book/page-data.ts';
 import { downloadText } from '../data/download.ts';
@@ -30,9 +30,8 @@ import { INPUT_EVENT, type WidgetInput } from '../controls/widget-input.ts';
 import { currentCellSignal, Notebook } from './runtime.ts';
 import { CellScheduler } from './schedule.ts';
 import { EditStore } from './storage.ts';
-import { decodeShare, isShareFragment } from './share-format.ts';
-import { planShared, sharedStore, type PageCell } from './share-session.ts';
-import { setUpShareButton, showShareProblem, showSharedBanner, type SharedView } from './share-ui.ts';
+import { isShareFragment } from './share-format.ts';
+import type { SharedView } from './share-ui.ts';
 import { CellView } from './cell-view.ts';
 
 function markReady(): void {
@@ -93,24 +92,16 @@ function passWidgetInputs(root: HTMLElement, cells: readonly LiveCell[]): void {
 }
 
 /**
- * The link's edits that apply to this chapter, in a store of their own; null
- * (after saying why, above the chapter) when the fragment is malformed, of
- * another version or chapter, or has nothing for this page.
+ * Shared links are rare and the Share button is pressed once in a while, so
+ * their code (share-ui.ts and the format and session behind it) loads only
+ * then, not with every page.
  */
-async function openShared(root: HTMLElement): Promise<SharedView | null> {
-  const decoded = await decodeShare(location.hash);
-  if (!decoded.ok) {
-    showShareProblem(decoded.message);
-    return null;
-  }
-  const page: PageCell[] = [...root.querySelectorAll<HTMLElement>('[data-cell]')].map((el) => ({ id: el.dataset.cell ?? '', hash: el.dataset.cellHash ?? '' }));
-  const plan = planShared(decoded.edits, root.dataset.chapter ?? '', page);
-  if (typeof plan === 'string') {
-    showShareProblem(plan);
-    return null;
-  }
-  const hashes = new Map(page.map((cell) => [cell.id, cell.hash]));
-  return { plan, store: sharedStore(location.pathname, plan, hashes), ownStore: () => new EditStore(location.pathname) };
+const loadShare = () => import('./share-ui.ts');
+
+/** Wires the Share button under the chapter's title (src/components/ShareEdits.astro). */
+function wireShareButton(chapter: ChapterCells): void {
+  const trigger = document.querySelector<HTMLButtonElement>('[data-share-edits] [data-share-button]');
+  trigger?.addEventListener('click', () => void loadShare().then((m) => m.shareEdits(chapter)));
 }
 
 function boot(): void {
@@ -124,11 +115,18 @@ function boot(): void {
     start(root, null);
     return;
   }
-  void openShared(root)
+  void loadShare()
+    .then((m) =>
+      m.openShared(root).catch((error: unknown) => {
+        // Nothing in decoding should throw; if it does, the chapter still starts as without the link.
+        console.error(error);
+        m.showShareProblem('The link’s shared edits could not be opened.');
+        return null;
+      }),
+    )
     .catch((error: unknown) => {
-      // Nothing in decoding should throw; if it does, the chapter still starts as without the link.
+      // The share code could not load (offline, say): the chapter starts as without the link.
       console.error(error);
-      showShareProblem('The link’s shared edits could not be opened.');
       return null;
     })
     .then((shared) => start(root, shared));
@@ -151,8 +149,8 @@ function start(root: HTMLElement, shared: SharedView | null): void {
   });
   chapter.build();
   const { cells } = chapter;
-  setUpShareButton(chapter);
-  if (shared) showSharedBanner(shared, chapter);
+  wireShareButton(chapter);
+  if (shared) void loadShare().then((m) => m.showSharedBanner(shared, chapter));
   // A page being printed shows every cell's output.
   addEventListener('beforeprint', () => cells.forEach((cell) => scheduler.want(cell)));
   // Keystrokes typed just before the reader leaves are saved, not lost with the pending timer.

@@ -11,9 +11,9 @@
  * (a page from an older build has none: then nothing here does anything).
  */
 import type { ChapterCells } from './chapter.ts';
-import { encodeShare, type SharedCell } from './share-format.ts';
-import { keepShared, markSharedRun, ownEdits, type SharedPlan } from './share-session.ts';
-import type { EditStore } from './storage.ts';
+import { decodeShare, encodeShare, type SharedCell } from './share-format.ts';
+import { keepShared, markSharedRun, ownEdits, planShared, sharedStore, type PageCell, type SharedPlan } from './share-session.ts';
+import { EditStore } from './storage.ts';
 
 function bar(): HTMLElement | null {
   return document.querySelector<HTMLElement>('[data-share-edits]');
@@ -46,13 +46,10 @@ function cellLabel(cell: SharedCell, addedIndex: number): string {
   return cell.kind === 'added' ? `added cell ${addedIndex}` : cell.id;
 }
 
-/** Wires the Share button: on click, the link to the chapter as the reader sees it, copied and shown with its length. */
-export function setUpShareButton(chapter: ChapterCells): void {
-  const root = bar();
-  const trigger = root?.querySelector<HTMLButtonElement>('[data-share-button]');
-  const panel = root?.querySelector<HTMLElement>('[data-share-panel]');
-  if (!root || !trigger || !panel) return;
-  trigger.addEventListener('click', () => void share(chapter, panel));
+/** What the Share button does (cells/boot.ts wires it): the link to the chapter as the reader sees it, copied and shown with its length. */
+export async function shareEdits(chapter: ChapterCells): Promise<void> {
+  const panel = bar()?.querySelector<HTMLElement>('[data-share-panel]');
+  if (panel) await share(chapter, panel);
 }
 
 async function share(chapter: ChapterCells, panel: HTMLElement): Promise<void> {
@@ -128,6 +125,27 @@ export interface SharedView {
   readonly store: EditStore;
   /** The reader's own store, made only when they keep the edits (making one may draw the browser's secret). */
   readonly ownStore: () => EditStore;
+}
+
+/**
+ * The link's edits that apply to this chapter, in a store of their own; null
+ * (after saying why, above the chapter) when the fragment is malformed, of
+ * another version or chapter, or has nothing for this page.
+ */
+export async function openShared(root: HTMLElement): Promise<SharedView | null> {
+  const decoded = await decodeShare(location.hash);
+  if (!decoded.ok) {
+    showShareProblem(decoded.message);
+    return null;
+  }
+  const page: PageCell[] = [...root.querySelectorAll<HTMLElement>('[data-cell]')].map((el) => ({ id: el.dataset.cell ?? '', hash: el.dataset.cellHash ?? '' }));
+  const plan = planShared(decoded.edits, root.dataset.chapter ?? '', page);
+  if (typeof plan === 'string') {
+    showShareProblem(plan);
+    return null;
+  }
+  const hashes = new Map(page.map((cell) => [cell.id, cell.hash]));
+  return { plan, store: sharedStore(location.pathname, plan, hashes), ownStore: () => new EditStore(location.pathname) };
 }
 
 /**

@@ -4,16 +4,17 @@
  * ticks and labels together with the same map as two numbers (a Mapping),
  * pixel = a·T(v) + b, which the per-sample loops evaluate inline.
  *
- * Linear and symlog scales keep d3's ticks, nice domains and tick formats
- * (d3-array, d3-scale's tickFormat) around a plain affine map:
- * d3-scale's own continuous scales interpolate through d3-interpolate,
- * which brings d3-color with it: about 7 kB gzip on every page with a plot,
- * for colour and string interpolation the plots never use (they map numbers
- * to pixels). These scales keep d3's behaviour for what the plots do use,
+ * The scales keep d3's ticks, nice domains and tick formats (d3-array,
+ * d3-scale's tickFormat, and scaleLog's tick placement and label thinning,
+ * which tests/unit/plots check against d3-scale) around a plain affine map.
+ * d3-scale's own continuous scales interpolate through d3-interpolate, which
+ * brings d3-color with it: about 7 kB gzip on every page with a plot, for
+ * colour and string interpolation the plots never use (they map numbers to
+ * pixels). These scales keep d3's behaviour for what the plots do use,
  * domain, range, invert, ticks, tickFormat and nice, and leave the rest.
  */
 import { nice as niceDomain, ticks as linearTicks } from 'd3-array';
-import { scaleLog as d3ScaleLog, tickFormat as d3TickFormat } from 'd3-scale';
+import { tickFormat as d3TickFormat } from 'd3-scale';
 
 export interface NumberScale {
   (value: number): number;
@@ -97,31 +98,57 @@ export function scaleSymlog(): NumberScale & { constant(c: number): NumberScale 
   return s;
 }
 
+const logTransform: Transform = { forward: Math.log, inverse: Math.exp };
+
 /**
- * A log scale: d3's scaleLog (its 1–9 and power-of-ten ticks), which the
- * book's charts use. It brings d3-interpolate and d3-color with it (about
- * 7 kB gzip), so nothing else here refers to it: a bundle holds it only when
- * a caller asks for it by name.
+ * The ticks of a log axis from `lo` to `hi` (0 < lo ≤ hi), as d3's scaleLog
+ * places them: while the decades spanned are fewer than `count`, every
+ * k·10ⁿ (k = 1…9) inside, or d3's linear ticks when those are under half of
+ * `count`; beyond that, powers of ten at a 1-2-5 step in the exponent.
  */
-export function scaleLog(): NumberScale {
-  const log = d3ScaleLog();
-  const s = ((v: number) => log(v)) as NumberScale;
-  s.domain = ((value?: readonly number[]) => {
-    if (value === undefined) return log.domain() as [number, number];
-    log.domain(value as number[]);
-    return s;
-  }) as NumberScale['domain'];
-  s.range = ((value?: readonly number[]) => {
-    if (value === undefined) return log.range() as [number, number];
-    log.range(value as number[]);
-    return s;
-  }) as NumberScale['range'];
-  s.invert = (pixel) => log.invert(pixel);
-  s.ticks = (count = 10) => log.ticks(count);
-  s.tickFormat = (count = 10, specifier) => log.tickFormat(count, specifier);
+export function logTicks(lo: number, hi: number, count = 10): number[] {
+  const e0 = Math.log10(lo);
+  const e1 = Math.log10(hi);
+  // "1e-5" and not 10 ** -5, which is one rounding off
+  if (e1 - e0 >= count) return linearTicks(e0, e1, Math.min(e1 - e0, count)).map((e) => Number(`1e${e}`));
+  const values: number[] = [];
+  for (let e = Math.floor(e0); e <= Math.ceil(e1); e++) {
+    for (let k = 1; k < 10; k++) {
+      // k/10^|e| rather than k·10^e below 1, so that 0.3 is 0.3 and not 0.30000000000000004
+      const v = e < 0 ? k / Number(`1e${-e}`) : k * Number(`1e${e}`);
+      if (v >= lo && v <= hi) values.push(v);
+    }
+  }
+  return values.length * 2 < count ? linearTicks(lo, hi, count) : values;
+}
+
+/**
+ * A log scale for positive values, with d3 scaleLog's ticks (logTicks) and
+ * its thinning of their labels: with `count` asked for, a tick k·10ⁿ is
+ * labelled when k ≤ max(1, 10·count / the number of its ten ticks), so a crowded axis
+ * labels its powers of ten and leaves the 2…9 multiples as marks. `label`
+ * writes a labelled tick.
+ */
+export function scaleLog(label: (value: number) => string): NumberScale {
+  const s = scale(() => logTransform);
+  s.ticks = (count = 10) => {
+    const [d0, d1] = s.domain();
+    const values = logTicks(Math.min(d0, d1), Math.max(d0, d1), count);
+    return d0 <= d1 ? values : values.reverse();
+  };
+  s.tickFormat = (count = 10) => {
+    const most = Math.max(1, (10 * count) / Math.max(1, s.ticks().length));
+    return (v) => {
+      let mantissa = v / Number(`1e${Math.round(Math.log10(v))}`);
+      if (mantissa * 10 < 9.5) mantissa *= 10;
+      return mantissa <= most ? label(v) : '';
+    };
+  };
   s.nice = () => {
-    log.nice();
-    return s;
+    const [d0, d1] = s.domain();
+    const n0 = Number(`1e${Math.floor(Math.log10(Math.min(d0, d1)))}`);
+    const n1 = Number(`1e${Math.ceil(Math.log10(Math.max(d0, d1)))}`);
+    return s.domain(d0 <= d1 ? [n0, n1] : [n1, n0]);
   };
   return s;
 }
@@ -146,7 +173,7 @@ export function untransform(kind: AxisKind, u: number, c = 1): number {
   return kind === 'log' ? Math.exp(u) : u;
 }
 
-/** The d3-style scale of a linear or symlog axis over `domain` onto `range`, for ticks and labels (a log axis's is scaleLog()). */
+/** The d3-style scale of a linear or symlog axis over `domain` onto `range`, for ticks and labels (a log axis's is scaleLog(label)). */
 export function scaleFor(kind: SignedKind, domain: Domain, range: Domain, c = 1): NumberScale {
   const scale = kind === 'symlog' ? scaleSymlog().constant(c) : scaleLinear();
   return scale.domain(domain).range(range);
@@ -166,9 +193,9 @@ export interface Mapping {
   readonly scale: NumberScale;
 }
 
-/** The mapping of `domain` onto `range`; a log axis passes its scale, scaleLog() with the same domain and range. */
+/** The mapping of `domain` onto `range`; a log axis passes its scale, scaleLog(label) with the same domain and range. */
 export function makeMapping(kind: AxisKind, domain: Domain, range: Domain, c = 1, given?: NumberScale): Mapping {
-  if (!given && kind === 'log') throw new Error('makeMapping: a log axis takes its scale from the caller, scaleLog()');
+  if (!given && kind === 'log') throw new Error('makeMapping: a log axis takes its scale from the caller, scaleLog(label)');
   const scale = given ?? scaleFor(kind as SignedKind, domain, range, c);
   const u0 = transform(kind, domain[0], c);
   const u1 = transform(kind, domain[1], c);

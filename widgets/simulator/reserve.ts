@@ -12,7 +12,7 @@
  * container. No DOM here: the build runs it in Node.
  */
 import type { Model } from '../core/index.ts';
-import { phasePairs } from '../plots/plane/plane-columns.ts';
+import { phasePairs } from '../plots/record-columns.ts';
 import { heightCss, PHASE_MULTIPLE, PHASE_PANEL, SPECTRUM_PLOT, timePlotHeight, TRAJECTORY_PANEL, type Proportional } from '../plots/sizes.ts';
 import { readoutLines } from '../plots/spectrum/spectrum-readout.ts';
 import { viewNames, type ViewName } from './options.ts';

@@ -1,15 +1,39 @@
 import { describe, expect, it } from 'vitest';
+import { scaleLog as d3Log } from 'd3-scale';
 import { makeMapping, scaleLog, toPixel } from '../../../widgets/plots/scale.ts';
 import { formatTick, symlogTicks, ticksFor } from '../../../widgets/plots/ticks.ts';
 
 describe('plots/scale: mappings', () => {
-  it('toPixel(makeMapping("log", domain, range, 1, scaleLog()), v) agrees with d3 scaleLog, and a log axis must bring its scale', () => {
-    const scale = scaleLog().domain([1e-3, 1e3]).range([300, 0]);
+  it('toPixel(makeMapping("log", domain, range, 1, scaleLog(label)), v) agrees with d3 scaleLog, and a log axis must bring its scale', () => {
+    const scale = scaleLog(String).domain([1e-3, 1e3]).range([300, 0]);
+    const reference = d3Log().domain([1e-3, 1e3]).range([300, 0]);
     const m = makeMapping('log', [1e-3, 1e3], [300, 0], 1, scale);
-    for (const v of [1e-3, 0.02, 1, 7, 1e3]) expect(toPixel(m, v)).toBeCloseTo(scale(v), 9);
+    for (const v of [1e-3, 0.02, 1, 7, 1e3]) {
+      expect(toPixel(m, v)).toBeCloseTo(reference(v), 9);
+      expect(scale(v)).toBeCloseTo(reference(v), 9);
+      expect(scale.invert(reference(v))).toBeCloseTo(v, 9);
+    }
     // Six decades over 300 px: 50 px a decade.
     expect(toPixel(m, 1) - toPixel(m, 10)).toBeCloseTo(50, 9);
     expect(() => makeMapping('log', [1, 10], [0, 1])).toThrow(/scaleLog/);
+  });
+
+  // The reference is d3-scale's own scaleLog, whose ticks and label thinning the charts keep without its interpolators.
+  it('scaleLog(label): ticks, labels shown, and nice as d3 scaleLog, across one to thirty decades, either way round', () => {
+    const label = (v: number) => `<${v}>`;
+    const domains: [number, number][] = [[1, 10], [2, 7], [0.013, 0.4], [1e-3, 1e3], [3e-12, 2e-2], [1e-30, 1], [1e5, 1e-2], [0.5, 0.9]];
+    for (const domain of domains) {
+      const ours = scaleLog(label).domain(domain).range([0, 500]);
+      const reference = d3Log().domain(domain).range([0, 500]);
+      for (const count of [2, 5, 10, 25]) {
+        const ticks = ours.ticks(count);
+        expect(ticks).toEqual(reference.ticks(count));
+        const format = ours.tickFormat(count);
+        const referenceFormat = reference.tickFormat(count, label as unknown as string);
+        expect(ticks.map(format)).toEqual(ticks.map(referenceFormat));
+      }
+      expect(scaleLog(label).domain(domain).nice().domain()).toEqual(d3Log().domain(domain).nice().domain());
+    }
   });
 
   it('toPixel(makeMapping("linear", domain, range), v) agrees with the d3 scale', () => {

@@ -1,7 +1,7 @@
 import type { Simulation } from '../../core/index.ts';
 import type { View } from '../view.ts';
 import type { SignedKind } from '../scale.ts';
-import { axisTitle, batchTitle, phasePairs, toExtent, tracksOf, type ExtentOption, type Pair } from './plane-columns.ts';
+import { axisTitle, batchTitle, phasePairs, toExtent, tracksOf, type ExtentOption, type Pair } from '../record-columns.ts';
 import type { PanelSpec } from './plane-panels.ts';
 import { PlaneView, type PlaneStyle } from './plane-view.ts';
 import { heightAt, PHASE_MULTIPLE, PHASE_PANEL } from '../sizes.ts';

@@ -1,15 +1,9 @@
+import type { Track } from '../record-columns.ts';
 import { makeMapping, transform, type Mapping, type SignedKind } from '../scale.ts';
 import { MARGIN, type Rect } from '../axes.ts';
 import { contains, emptyExtent, fitEqualAspect, growExtent, includePoint, isEmpty, stretchGrowth, union, type Extent } from '../extent.ts';
 import { gridColumns } from '../sizes.ts';
 import { makePens, type Pens } from '../trace.ts';
-
-/** One line on a plane plot: the record columns of its x and y, and its colour group. */
-export interface Track {
-  x: number;
-  y: number;
-  group: number;
-}
 
 /** What a caller asks of one panel of a plane plot (a trajectory, or one phase portrait). */
 export interface PanelSpec {

@@ -1,6 +1,6 @@
 import type { Simulation } from '../../core/index.ts';
 import type { View } from '../view.ts';
-import { axisTitle, batchTitle, defaultBodies, toExtent, tracksOf, type ExtentOption, type Pair } from './plane-columns.ts';
+import { axisTitle, batchTitle, defaultBodies, toExtent, tracksOf, type ExtentOption, type Pair } from '../record-columns.ts';
 import type { PanelSpec } from './plane-panels.ts';
 import { PlaneView, type PlaneStyle } from './plane-view.ts';
 import { heightAt, TRAJECTORY_PANEL } from '../sizes.ts';

@@ -5,7 +5,7 @@ import { PlotTable } from '../plot-table.ts';
 import { show, type TableData } from '../table-data.ts';
 import { analyse, chooseMaxFrequency, displaySpectrum, largestShown, steadyLimit, theoryOf } from './spectrum-analysis.ts';
 import { basisLine, compareWithTheory, fixed, frequencyDecimals, nearestPeak, peakLine, significant, SpectrumReadout } from './spectrum-readout.ts';
-import { columnsOf } from '../plane/plane-columns.ts';
+import { columnsOf } from '../record-columns.ts';
 import { controlRow, selectControl, seriesChoices, type SelectControl } from './spectrum-controls.ts';
 import { drawSpectrum, lastBin, spectrumMappings, type SpectrumPicture, type SpectrumShow } from './spectrum-plot.ts';
 import { checkSpectrumOptions, chooseRows, gatherSamples, MIN_SAMPLES, type RowChoice, rowsInSpan, type SpanOption } from './spectrum-rows.ts';

@@ -1,7 +1,13 @@
-import type { RecordLayout } from '../../core/index.ts';
-import type { Extent } from '../extent.ts';
-import type { Track } from './plane-panels.ts';
-import { spread } from '../series.ts';
+import type { RecordLayout } from '../core/index.ts';
+import type { Extent } from './extent.ts';
+import { spread } from './series.ts';
+
+/** One line on a plane plot: the record columns of its x and y, and its colour group. */
+export interface Track {
+  x: number;
+  y: number;
+  group: number;
+}
 
 /** A pair of record series drawn as (x, y): state names such as 'q0', or exact columns such as 'q0[3]'. */
 export type Pair = readonly [string, string];

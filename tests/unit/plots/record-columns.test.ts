@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { recordLayout } from '../../../../widgets/core/index.ts';
-import { axisTitle, columnsOf, defaultBodies, phasePairs, toExtent, tracksOf } from '../../../../widgets/plots/plane/plane-columns.ts';
+import { recordLayout } from '../../../widgets/core/index.ts';
+import { axisTitle, columnsOf, defaultBodies, phasePairs, toExtent, tracksOf } from '../../../widgets/plots/record-columns.ts';
 
 // Columns t, q0 … q3, p0 … p3, H
 const single = recordLayout(['q0', 'q1', 'q2', 'q3', 'p0', 'p1', 'p2', 'p3'], ['H']);
@@ -68,7 +68,7 @@ describe('plane-columns', () => {
 
 describe('a large batch: a plane view draws a stated, even sample of its trajectories', () => {
   it('tracksOf picks MAX_PLANE_TRACKS evenly spread trajectories, first and last included, with their own groups', async () => {
-    const { tracksOf, MAX_PLANE_TRACKS, batchTitle } = await import('../../../../widgets/plots/plane/plane-columns.ts');
+    const { tracksOf, MAX_PLANE_TRACKS, batchTitle } = await import('../../../widgets/plots/record-columns.ts');
     const count = 100_000;
     // Every trajectory's q, then every trajectory's p.
     const block = (name: string, first: number, n: number) => ({ name, columns: Array.from({ length: n }, (_, j) => first + j) });
