@@ -38,26 +38,97 @@ export function contains(outer: Extent, inner: Extent): boolean {
 }
 
 /**
- * [lo, hi] widened by `headroom` of its span on each side, in the axis's
- * transformed space, and rounded outward to tick values for a linear axis.
- * A zero span (the first sample, or a coordinate that has not moved yet) is
- * given a width proportional to its size, so that the first frames do not
- * zoom onto a single point.
+ * What an interval of zero span (the first sample, or a coordinate that has
+ * not moved yet) is widened to: it has no span to pad by.
  */
-export function padInterval(lo: number, hi: number, headroom: number, kind: SignedKind = 'linear', c = 1): [number, number] {
+export interface ZeroSpanRule {
+  /** Half the width it is given, in transformed units, at transformed position u. */
+  halfWidth: (u: number, kind: SignedKind) => number;
+  /** Whether the padding is then added to that width too; if not, the width is the whole margin. */
+  padded: boolean;
+}
+
+/** How a family of plots pads its intervals, whatever the amount: single values and rounding. */
+export interface PaddingPolicy {
+  zeroSpan: ZeroSpanRule;
+  /** The tick count for d3's nice() that rounds a linear axis's ends: the more ticks, the smaller the step and the closer the ends hug the data. */
+  linearNiceCount: number;
+  /** A symlog axis's ends: rounded outward on the 1-2-5 ladder (see roundOutward), or left as padded. */
+  symlogRounding: 'ladder' | 'none';
+}
+
+/** One interval's padding: the policy, on which axis, and how much. */
+export interface PadOptions extends PaddingPolicy {
+  /** Fraction of the span added on each side, in transformed units. */
+  padding: number;
+  kind: SignedKind;
+  /** The symlog constant c of the axis (a linear axis ignores it). */
+  c: number;
+}
+
+/**
+ * [lo, hi] widened by `padding` of its span on each side, in the axis's
+ * transformed space (so that symlog padding is even in decades), then rounded
+ * outward as the policy says. A zero span is first widened by the policy's
+ * zero-span rule. Padding never crosses zero: data that are all ≥ 0 (a
+ * distance, an energy, a count) keep 0 as the floor, and data all ≤ 0 keep
+ * it as the ceiling.
+ */
+export function padAndRound(lo: number, hi: number, options: PadOptions): [number, number] {
+  const { kind, c, padding, zeroSpan } = options;
   let a = transform(kind, lo, c);
   let b = transform(kind, hi, c);
-  if (!(b - a > 0)) {
-    const half = Math.max(Math.abs(a) * 0.1, kind === 'symlog' ? 0.5 : 1e-6);
+  let pad: number;
+  if (b - a > 0) pad = (b - a) * padding;
+  else {
+    const half = zeroSpan.halfWidth(a, kind);
     a -= half;
     b += half;
+    pad = zeroSpan.padded ? (b - a) * padding : 0;
   }
-  const pad = (b - a) * headroom;
-  // padding never crosses zero: a quantity that has not been negative keeps 0 as its floor
-  a = untransform(kind, lo >= 0 && hi > 0 ? Math.max(0, a - pad) : a - pad, c);
-  b = untransform(kind, hi <= 0 && lo < 0 ? Math.min(0, b + pad) : b + pad, c);
-  if (kind === 'linear') [a, b] = scaleLinear().domain([a, b]).nice(16).domain() as [number, number];
-  return [a, b];
+  const low = lo >= 0 && hi > 0 ? Math.max(0, a - pad) : a - pad;
+  const high = hi <= 0 && lo < 0 ? Math.min(0, b + pad) : b + pad;
+  return roundEnds(untransform(kind, low, c), untransform(kind, high, c), options);
+}
+
+/** Padded ends rounded outward, to d3's nice steps on a linear axis and as the policy says on a symlog one. */
+function roundEnds(lo: number, hi: number, options: PadOptions): [number, number] {
+  if (options.kind === 'linear') return scaleLinear().domain([lo, hi]).nice(options.linearNiceCount).domain();
+  return options.symlogRounding === 'ladder' ? [roundOutward(lo, -1), roundOutward(hi, 1)] : [lo, hi];
+}
+
+/**
+ * v moved away from zero (direction 1 rounds up, −1 down) to the next value
+ * of the 1-2-5 ladder (…, 0.5, 1, 2, 5, 10, …); 0 stays 0.
+ */
+export function roundOutward(v: number, direction: 1 | -1): number {
+  if (v === 0 || !Number.isFinite(v)) return v;
+  const away = Math.sign(v) === direction;
+  const magnitude = Math.abs(v);
+  const decade = 10 ** Math.floor(Math.log10(magnitude));
+  const ladder = [1, 2, 5, 10];
+  let rounded: number;
+  if (away) rounded = decade * ladder.find((f) => f * decade >= magnitude * (1 - 1e-12))!;
+  else rounded = decade * [...ladder].reverse().find((f) => f * decade <= magnitude * (1 + 1e-12))!;
+  return Math.sign(v) * rounded;
+}
+
+/**
+ * The plane's policy. A single value gets a width of a tenth of its
+ * transformed size each way (at least half a unit on symlog, a hair on
+ * linear), so that the first frames do not zoom onto a single point, and is
+ * then padded like any span; linear ends go to d3's nice steps for about 16
+ * ticks, symlog ends stay as padded.
+ */
+export const PLANE_POLICY: PaddingPolicy = {
+  zeroSpan: { halfWidth: (u, kind) => Math.max(Math.abs(u) * 0.1, kind === 'symlog' ? 0.5 : 1e-6), padded: true },
+  linearNiceCount: 16,
+  symlogRounding: 'none',
+};
+
+/** [lo, hi] padded by `headroom` of its span on each side under the plane's policy (see padAndRound). */
+export function padInterval(lo: number, hi: number, headroom: number, kind: SignedKind = 'linear', c = 1): [number, number] {
+  return padAndRound(lo, hi, { ...PLANE_POLICY, padding: headroom, kind, c });
 }
 
 /** The smallest extent holding both (either may be empty). */

@@ -1,4 +1,5 @@
-import { scaleLinear, transform, untransform, type Domain, type SignedKind } from '../scale.ts';
+import { padAndRound, type PaddingPolicy } from '../extent.ts';
+import { transform, type Domain, type SignedKind } from '../scale.ts';
 
 /**
  * The y range of a plot that fits its data. A running plot only grows its
@@ -13,30 +14,30 @@ export const GROWTH_HEADROOM = 0.25;
 export const FIT_PADDING = 0.05;
 
 /**
+ * The time plots' policy. A single value gets a fixed margin in place of
+ * padding: a tenth of its size each way (1 at 0) on a linear axis, half a
+ * transformed unit on symlog. Linear ends go to d3's nice steps for about 20
+ * ticks, round ends that still hug the data (the axis picks its own, fewer,
+ * ticks); symlog ends to the 1-2-5 ladder.
+ */
+export const AUTOSCALE_POLICY: PaddingPolicy = {
+  zeroSpan: { halfWidth: (u, kind) => (kind === 'symlog' ? 0.5 : u === 0 ? 1 : Math.abs(u) * 0.1), padded: false },
+  linearNiceCount: 20,
+  symlogRounding: 'ladder',
+};
+
+/**
  * A range containing [lo, hi] padded by `padding` of its span, rounded
- * outward to round numbers. Empty or non-finite data gives [−1, 1]; a single
- * value v gives a range around v. Padding never crosses zero: data that are
- * all ≥ 0 (a distance, an energy, a count) keep 0 as the floor, and data
- * all ≤ 0 keep it as the ceiling.
+ * outward to round numbers, under AUTOSCALE_POLICY (see padAndRound, which
+ * also keeps 0 as the floor of data all ≥ 0 and the ceiling of data all
+ * ≤ 0). Empty or non-finite data gives [−1, 1]; a single value v gives a
+ * range around v.
  */
 export function fit(lo: number, hi: number, kind: SignedKind, padding = FIT_PADDING): Domain {
+  // before any data (or with a NaN in it) the plot still needs some range to draw its axes on
   if (!Number.isFinite(lo) || !Number.isFinite(hi) || lo > hi) return [-1, 1];
-  const floor = (padded: number) => (lo >= 0 && hi > 0 ? Math.max(0, padded) : padded);
-  const ceiling = (padded: number) => (hi <= 0 && lo < 0 ? Math.min(0, padded) : padded);
-  if (kind === 'symlog') {
-    let u0 = transform('symlog', lo);
-    let u1 = transform('symlog', hi);
-    const pad = u1 > u0 ? (u1 - u0) * padding : 0.5;
-    u0 -= pad;
-    u1 += pad;
-    return [roundOutward(floor(untransform('symlog', u0)), -1), roundOutward(ceiling(untransform('symlog', u1)), 1)];
-  }
-  if (lo === hi) {
-    const half = lo === 0 ? 1 : Math.abs(lo) * 0.1;
-    return niceLinear(lo - half, hi + half);
-  }
-  const pad = (hi - lo) * padding;
-  return niceLinear(floor(lo - pad), ceiling(hi + pad));
+  // the time plots' symlog is the paper's ln(1 + |y|): constant c = 1
+  return padAndRound(lo, hi, { ...AUTOSCALE_POLICY, padding, kind, c: 1 });
 }
 
 /**
@@ -47,12 +48,6 @@ export function grow(domain: Domain, lo: number, hi: number, kind: SignedKind): 
   if (!(lo < domain[0]) && !(hi > domain[1])) return null;
   if (!Number.isFinite(lo) || !Number.isFinite(hi)) return null;
   return fit(Math.min(lo, domain[0]), Math.max(hi, domain[1]), kind, GROWTH_HEADROOM);
-}
-
-/** Rounded outward on d3's nice steps for about 20 ticks: round ends that still hug the data (the axis picks its own, fewer, ticks). */
-function niceLinear(lo: number, hi: number): Domain {
-  const [a, b] = scaleLinear().domain([lo, hi]).nice(20).domain();
-  return [a, b];
 }
 
 /** How much of a range the data may leave empty before a settled plot fits it again. */
@@ -69,22 +64,6 @@ export function settle(domain: Domain, lo: number, hi: number, kind: SignedKind)
   const tight = fit(lo, hi, kind);
   const t = (v: number) => transform(kind, v);
   return t(tight[1]) - t(tight[0]) < SETTLE_RATIO * (t(domain[1]) - t(domain[0])) ? tight : null;
-}
-
-/**
- * v moved away from zero (direction 1 rounds up, −1 down) to the next value
- * of the 1-2-5 ladder (…, 0.5, 1, 2, 5, 10, …); 0 stays 0.
- */
-export function roundOutward(v: number, direction: 1 | -1): number {
-  if (v === 0 || !Number.isFinite(v)) return v;
-  const away = Math.sign(v) === direction;
-  const magnitude = Math.abs(v);
-  const decade = 10 ** Math.floor(Math.log10(magnitude));
-  const ladder = [1, 2, 5, 10];
-  let rounded: number;
-  if (away) rounded = decade * ladder.find((f) => f * decade >= magnitude * (1 - 1e-12))!;
-  else rounded = decade * [...ladder].reverse().find((f) => f * decade <= magnitude * (1 + 1e-12))!;
-  return Math.sign(v) * rounded;
 }
 
 /** Smallest and largest finite value of a list, as [lo, hi]; [Infinity, −Infinity] when there is none. */

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { extent, fit, grow, roundOutward, settle } from '../../../../widgets/plots/time/autoscale.ts';
+import { extent, fit, grow, settle } from '../../../../widgets/plots/time/autoscale.ts';
+import { roundOutward } from '../../../../widgets/plots/extent.ts';
 
 describe('plots/autoscale', () => {
   it('fit(lo, hi, "linear") pads and rounds outward to round numbers', () => {
