@@ -12,23 +12,20 @@ export const themeScript = `try {
   if (theme === 'light' || theme === 'dark') document.documentElement.dataset.theme = theme;
 } catch {}`;
 
-/** After the toggle button: its label names the theme a click switches to. */
-export const themeToggleScript = `(() => {
-  const button = document.querySelector('[data-theme-toggle]');
-  const root = document.documentElement;
-  const system = matchMedia('(prefers-color-scheme: dark)');
-  const current = () => root.dataset.theme || (system.matches ? 'dark' : 'light');
-  const label = () => {
-    button.textContent = current() === 'dark' ? 'Light theme' : 'Dark theme';
-  };
-  button.addEventListener('click', () => {
-    const next = current() === 'dark' ? 'light' : 'dark';
-    root.dataset.theme = next;
-    try {
-      localStorage.setItem('phasebook:theme', next);
-    } catch {}
-    label();
-  });
-  system.addEventListener('change', label);
-  label();
-})();`;
+/**
+ * The toggle's click, as an inline module script: deferred, so it never
+ * holds up the parsing of a long chapter while the stylesheet loads, as a
+ * classic script after a stylesheet does. The button's label needs no
+ * script: it holds both labels, and global.css shows the one that names the
+ * theme a click switches to.
+ */
+export const themeToggleScript = `const button = document.querySelector('[data-theme-toggle]');
+const root = document.documentElement;
+const system = matchMedia('(prefers-color-scheme: dark)');
+button?.addEventListener('click', () => {
+  const next = (root.dataset.theme || (system.matches ? 'dark' : 'light')) === 'dark' ? 'light' : 'dark';
+  root.dataset.theme = next;
+  try {
+    localStorage.setItem('phasebook:theme', next);
+  } catch {}
+});`;

@@ -110,14 +110,26 @@ test('the theme toggle switches and remembers the theme', async () => {
   await page.goto(`${site.origin}/introduction/`);
   const background = () => page.evaluate(() => getComputedStyle(document.documentElement).backgroundColor);
   const light = await background();
+  const label = () => page.locator('[data-theme-toggle]').innerText();
+  assert.equal(await label(), 'Dark theme');
   await page.locator('[data-theme-toggle]').click();
   assert.equal(await page.evaluate(() => document.documentElement.dataset.theme), 'dark');
+  assert.equal(await label(), 'Light theme');
   const dark = await background();
   assert.notEqual(dark, light);
   await page.reload();
   assert.equal(await background(), dark);
   await page.locator('[data-theme-toggle]').click();
   assert.equal(await background(), light);
+  await page.evaluate(() => localStorage.removeItem('phasebook:theme'));
+  // With nothing pinned the page follows the system, and the label offers the other theme.
+  await page.emulateMedia({ colorScheme: 'dark' });
+  await page.reload();
+  assert.equal(await background(), dark);
+  assert.equal(await label(), 'Light theme');
+  await page.locator('[data-theme-toggle]').click();
+  assert.equal(await background(), light);
+  assert.equal(await label(), 'Dark theme');
   await page.evaluate(() => localStorage.removeItem('phasebook:theme'));
   await page.close();
 });
