@@ -2,8 +2,8 @@
  * Boxes that scroll sideways (display math, code wider than the column on a
  * phone) must be reachable by keyboard, or a keyboard reader cannot see
  * their end. Only boxes that do overflow become focusable: a tab stop on
- * every formula would be noise. Checked at start and whenever the column's
- * width changes.
+ * every formula would be noise. Checked at start, whenever the column's
+ * width changes, and when fonts finish loading.
  */
 const SCROLLERS = '.katex-display, pre.cell-code, .cell-output';
 
@@ -40,10 +40,13 @@ export function mark(box: HTMLElement): void {
   }
 }
 
-/** Marks the overflowing boxes of `root` now and after every change of its width. */
+/** Marks the overflowing boxes of `root` now, after every change of its width, and when fonts arrive. */
 export function watchScrollables(root: HTMLElement): void {
   const all = () => root.querySelectorAll<HTMLElement>(SCROLLERS).forEach(mark);
   all();
+  // A face requested by the first layout (KaTeX's, the code font's) may still be used if it arrives within
+  // font-display: optional's short wait, after this first check: the text it sets is wider, and may overflow.
+  document.fonts?.addEventListener?.('loadingdone', all);
   if (typeof ResizeObserver !== 'undefined') {
     let width = root.clientWidth;
     new ResizeObserver(() => {
