@@ -114,7 +114,17 @@ test('a blow-up pauses the widget with a message naming t and the component; the
   await typeIntoCell(page, 'initial', 'initial = [1, 0]');
   await waitForNewWidget(page, `s.model.source === 'p^2/2 - q^4' && s.simulation.initial[0] === 1`);
   // From (1, 0), q̈ = 4q³ sends q to infinity at t* = ∫₁^∞ dq / √(2(q⁴ − 1)) ≈ 0.93.
-  await page.waitForFunction((selector) => !document.querySelector(`${selector} .pb-alert`)?.hidden, SIM, { timeout: 15_000 });
+  // Cells above may still re-lay out (the equations of the new H are typeset): the simulator is kept in view, since out of view it pauses.
+  await page.waitForFunction(
+    (selector) => {
+      const el = document.querySelector(selector);
+      const box = el?.getBoundingClientRect();
+      if (box && (box.bottom < 0 || box.top > innerHeight)) el.scrollIntoView({ block: 'center' });
+      return !document.querySelector(`${selector} .pb-alert`)?.hidden;
+    },
+    SIM,
+    { timeout: 15_000 },
+  );
   const stopped = await widget(page);
   const match = /^Stopped: the state became (-?Infinity|NaN) at t = ([\d.e-]+) in (q|p);.*Restart, or try a smaller dt\.$/.exec(stopped.alert);
   assert.ok(match, `alert: ${stopped.alert}`);
