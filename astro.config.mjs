@@ -74,6 +74,7 @@ export default defineConfig({
     worker: { format: 'es', rollupOptions: { treeshake: { moduleSideEffects: coreIsPure } } },
     plugins: [katexWithoutFontFaces()],
     build: {
+      // PHASEBOOK_SOURCEMAP=1 writes source maps, to see which modules make up each chunk's bytes.
       sourcemap: !!process.env.PHASEBOOK_SOURCEMAP,
       rollupOptions: {
         treeshake: { moduleSideEffects: coreIsPure },

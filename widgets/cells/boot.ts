@@ -98,6 +98,26 @@ function passWidgetInputs(root: HTMLElement, cells: readonly LiveCell[]): void {
  */
 const loadShare = () => import('./share-ui.ts');
 
+/** The shared link's edits for this chapter (share-ui.ts), or null: the chapter then starts as without the link. */
+async function openSharedLink(root: HTMLElement): Promise<SharedView | null> {
+  let share: Awaited<ReturnType<typeof loadShare>>;
+  try {
+    share = await loadShare();
+  } catch (error) {
+    // The share code could not load (offline, say).
+    console.error(error);
+    return null;
+  }
+  try {
+    return await share.openShared(root);
+  } catch (error) {
+    // Nothing in decoding should throw; if it does, the reader hears why the edits are not shown.
+    console.error(error);
+    share.showShareProblem('The link’s shared edits could not be opened.');
+    return null;
+  }
+}
+
 /** Wires the Share button under the chapter's title (src/components/ShareEdits.astro). */
 function wireShareButton(chapter: ChapterCells): void {
   const trigger = document.querySelector<HTMLButtonElement>('[data-share-edits] [data-share-button]');
@@ -115,21 +135,7 @@ function boot(): void {
     start(root, null);
     return;
   }
-  void loadShare()
-    .then((m) =>
-      m.openShared(root).catch((error: unknown) => {
-        // Nothing in decoding should throw; if it does, the chapter still starts as without the link.
-        console.error(error);
-        m.showShareProblem('The link’s shared edits could not be opened.');
-        return null;
-      }),
-    )
-    .catch((error: unknown) => {
-      // The share code could not load (offline, say): the chapter starts as without the link.
-      console.error(error);
-      return null;
-    })
-    .then((shared) => start(root, shared));
+  void openSharedLink(root).then((shared) => start(root, shared));
 }
 
 function start(root: HTMLElement, shared: SharedView | null): void {

@@ -9,6 +9,7 @@ import {
   padAndRound,
   padInterval,
   PLANE_POLICY,
+  roundOutward,
   stretchGrowth,
   type PaddingPolicy,
 } from '../../../widgets/plots/extent.ts';
@@ -100,6 +101,15 @@ describe('extent', () => {
 });
 
 describe('padAndRound, the padding shared by the plane and the time plots', () => {
+  it('roundOutward(v, direction) moves away from zero only in the given direction', () => {
+    expect(roundOutward(3.7, 1)).toBe(5);
+    expect(roundOutward(3.7, -1)).toBe(2);
+    expect(roundOutward(-3.7, -1)).toBe(-5);
+    expect(roundOutward(-3.7, 1)).toBe(-2);
+    expect(roundOutward(2, 1)).toBe(2);
+    expect(roundOutward(0, 1)).toBe(0);
+  });
+
   const policies: [string, PaddingPolicy][] = [
     ['plane', PLANE_POLICY],
     ['autoscale', AUTOSCALE_POLICY],

@@ -1,6 +1,5 @@
 import { describe, expect, it } from 'vitest';
 import { extent, fit, grow, settle } from '../../../../widgets/plots/time/autoscale.ts';
-import { roundOutward } from '../../../../widgets/plots/extent.ts';
 
 describe('plots/autoscale', () => {
   it('fit(lo, hi, "linear") pads and rounds outward to round numbers', () => {
@@ -82,15 +81,6 @@ describe('plots/autoscale', () => {
       }
     }
     expect(redraws).toBeLessThan(40);
-  });
-
-  it('roundOutward(v, direction) moves away from zero only in the given direction', () => {
-    expect(roundOutward(3.7, 1)).toBe(5);
-    expect(roundOutward(3.7, -1)).toBe(2);
-    expect(roundOutward(-3.7, -1)).toBe(-5);
-    expect(roundOutward(-3.7, 1)).toBe(-2);
-    expect(roundOutward(2, 1)).toBe(2);
-    expect(roundOutward(0, 1)).toBe(0);
   });
 
   it('extent(values) ignores NaN and infinities', () => {
