@@ -84,6 +84,11 @@ export function analyzeCell(source) {
  * @param {string} [output] HTML of the cell's value when the build could compute it (a typeset formula)
  * @returns {import('hast').Element}
  */
+/** The lines a cell's code shows: a final newline starts no line of its own in a <pre>. */
+export function lineCount(source) {
+  return source.replace(/\n$/, '').split('\n').length;
+}
+
 export function renderCell(source, id, analysis, output) {
   const name = 'spec' in analysis ? analysis.spec.name : null;
   const label = name ? `Code cell ${name}` : 'Code cell';
@@ -97,7 +102,8 @@ export function renderCell(source, id, analysis, output) {
   return h('figure', properties, [
     h('div', { className: ['cell-box'] }, [
       h('div', { className: ['cell-editor'] }, [
-        h('pre', { className: ['cell-code'], tabIndex: 0, ariaLabel: label }, [
+        // Its number of lines keeps its place while it is not laid out (cells.css).
+        h('pre', { className: ['cell-code'], tabIndex: 0, ariaLabel: label, style: `--lines: ${lineCount(source)}` }, [
           h('code', { className: [`language-${CELL_CODE_LANGUAGE}`] }, highlightJs(source)),
         ]),
       ]),

@@ -285,3 +285,91 @@ describe('every simulator appears in the box the build reserved for it, at desk 
     });
   }
 });
+
+/**
+ * A link to a place in a chapter (`/kepler/#cell-stars`): the page shows that
+ * place from its first paint, and a link to a simulator asks for the
+ * simulator's modules from the head (src/lib/linked-preloads.mjs), not once
+ * the boot script has arrived and run. Both are checked with the boot script
+ * held back: whatever happens then happened without it.
+ */
+describe('a link to a place in a chapter', () => {
+  const BOOT = /\/_astro\/Cells\.astro[\w.-]*\.js$/;
+  const chunkOf = (url) => new URL(url).pathname.split('/').pop().split('.')[0];
+
+  /** Opens `path` with the boot script held until `release()`; `scripts` lists the scripts asked for meanwhile. */
+  async function openHeld(path) {
+    const page = await site.context.newPage();
+    let release;
+    const held = new Promise((resolve) => (release = resolve));
+    await page.route(BOOT, async (route) => {
+      await held;
+      await route.continue().catch(() => {});
+    });
+    const scripts = [];
+    page.on('request', (request) => {
+      if (/\.js$/.test(request.url()) && !BOOT.test(request.url())) scripts.push(chunkOf(request.url()));
+    });
+    await page.goto(`${site.origin}${path}`, { waitUntil: 'commit' });
+    // Parsing is over (the head's and the body's inline scripts have run); the module script has not.
+    await page.waitForFunction(() => document.readyState !== 'loading');
+    assert.equal(await page.evaluate(() => document.body.hasAttribute('data-cells-ready')), false);
+    return { page, scripts, release };
+  }
+
+  test('to a simulator: its modules are asked for while the boot script is still on its way, and it then draws', async () => {
+    const { page, scripts, release } = await openHeld('/kepler/#cell-stars');
+    await page.waitForTimeout(300);
+    const early = [...scripts];
+    for (const wanted of ['simulator', 'plots', 'core', 'model', 'time-plot', 'plane-views']) assert.ok(early.includes(wanted), `${wanted} in ${early.join(', ')}`);
+    assert.ok(!early.includes('spectrum'), 'the spectrum view, which this simulator does not show');
+    release();
+    await page.locator('#cell-stars [data-widget="simulator"][data-ready]').waitFor({ timeout: 30_000 });
+    await page.close();
+  });
+
+  test('to the top, or to a cell without a simulator: nothing more is asked for', async () => {
+    for (const path of ['/kepler/', '/kepler/#cell-model', '/kepler/#no-such-place']) {
+      const { page, scripts, release } = await openHeld(path);
+      await page.waitForTimeout(300);
+      assert.deepEqual(scripts, [], path);
+      release();
+      await page.close();
+    }
+  });
+
+  test('the linked place is in view from the first paint, before any script of the book has run', async () => {
+    for (const [path, id] of [['/kepler/#cell-stars', 'cell-stars'], ['/introduction/#cell-sim', 'cell-sim']]) {
+      const { page, release } = await openHeld(path);
+      const place = await page.evaluate((id) => ({ top: document.getElementById(id).getBoundingClientRect().top, scrolled: scrollY }), id);
+      assert.ok(place.scrolled > 500 && Math.abs(place.top) <= 2, `${path}: ${JSON.stringify(place)}`);
+      release();
+      await page.close();
+    }
+  });
+});
+
+test('a cell’s code far from the view keeps the place it takes when laid out, to the layout’s rounding', async (t) => {
+  const page = await site.context.newPage();
+  let compared = 0;
+  let worst = 0;
+  for (const path of CHAPTERS) {
+    await page.goto(`${site.origin}${path}`);
+    const heights = () => page.evaluate(() => [...document.querySelectorAll('pre.cell-code')].map((pre) => pre.getBoundingClientRect().height));
+    const lines = await page.evaluate(() => [...document.querySelectorAll('pre.cell-code')].map((pre) => Number(pre.style.getPropertyValue('--lines'))));
+    const skipped = await page.evaluate(() => [...document.querySelectorAll('pre.cell-code')].map((pre) => !pre.firstElementChild.checkVisibility({ contentVisibilityAuto: true })));
+    const before = await heights();
+    await page.addStyleTag({ content: 'pre.cell-code { content-visibility: visible !important; }' });
+    const after = await heights();
+    for (const [i, height] of after.entries()) {
+      if (!skipped[i]) continue;
+      compared++;
+      worst = Math.max(worst, Math.abs(before[i] - height) / lines[i]);
+      // Each line box is laid out on Chromium's grid of 1/64 px; the place kept is lines × the exact line height.
+      assert.ok(Math.abs(before[i] - height) <= lines[i] / 64 + 0.01, `${path}, code ${i + 1} (${lines[i]} lines): ${before[i]} px kept, ${height} px laid out`);
+    }
+  }
+  t.diagnostic(`${compared} codes compared while not laid out; largest difference ${worst.toFixed(4)} px a line`);
+  assert.ok(compared >= 40, `${compared} codes compared while not laid out`);
+  await page.close();
+});

@@ -172,12 +172,26 @@ function audit(smallest) {
 }
 
 /**
- * Lets the layout settle: the fonts in, then two frames, in which the page
- * marks the boxes that scroll (a resize observer, widgets/cells/scrollables.ts).
+ * Lets the layout settle as for a reader who has read the whole page: the
+ * fonts in; every part of the page shown once, a viewport at a time, with
+ * the frames in which the page marks the boxes that scroll
+ * (widgets/cells/scrollables.ts: prose far from the view is not laid out
+ * until it comes near, global.css); then every block laid out at once, so
+ * that the audit can measure them all.
  * @param {import('playwright-core').Page} page
  */
 async function settle(page) {
   await page.evaluate(() => document.fonts.ready);
+  await page.evaluate(async () => {
+    const frames = () => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(() => setTimeout(done, 20))));
+    for (let y = 0; y < document.documentElement.scrollHeight; y += innerHeight * 0.8) {
+      scrollTo(0, y);
+      await frames();
+    }
+    scrollTo(0, 0);
+    await frames();
+  });
+  await page.addStyleTag({ content: 'article[data-chapter] > * { content-visibility: visible !important; }' });
   await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
 }
 

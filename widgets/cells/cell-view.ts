@@ -3,7 +3,7 @@
  * build put there and shows values, errors and notices. No runtime logic.
  */
 import { inspect } from './inspect.ts';
-import { mark as markScrollable } from './scrollables.ts';
+import { markSoon as markScrollable } from './scrollables.ts';
 import type { CellSpec } from './spec.ts';
 
 /**
@@ -136,8 +136,8 @@ export class CellView {
     this.#inspectTimer = undefined;
     if (value instanceof Node) {
       if (this.#output.firstChild !== value || this.#output.childNodes.length !== 1) this.#output.replaceChildren(value);
-      // A wide table or figure makes the output scroll: then it must be reachable by keyboard (after it is laid out).
-      requestAnimationFrame(() => markScrollable(this.#output));
+      // A wide table or figure makes the output scroll: then it must be reachable by keyboard (checked once it is laid out).
+      markScrollable(this.#output);
       return;
     }
     if (value === undefined && !name) {

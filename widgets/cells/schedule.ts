@@ -56,15 +56,10 @@ export class CellScheduler {
     let first = true;
     const byRoot = new Map(cells.map((cell) => [cell.root, cell]));
     // A link to a cell (`/kepler/#cell-stars`) says what the reader came for: start it now, not after the first layout.
-    const element = linkedElement();
-    const target = element?.closest<HTMLElement>('[data-cell]');
+    // (The page itself shows the linked place from its first paint: src/lib/fragment.ts.)
+    const target = linkedElement()?.closest<HTMLElement>('[data-cell]');
     const linked = target ? byRoot.get(target) : undefined;
-    if (linked) {
-      this.want(linked);
-      // Browsers scroll to the fragment only once the page has loaded (every widget module and font in): until
-      // then the reader would watch the top of the chapter, then a jump. Go there now, unless they have scrolled.
-      if (scrollY === 0) element?.scrollIntoView();
-    }
+    if (linked) this.want(linked);
     this.#observer = new IntersectionObserver(
       (entries) => {
         for (const entry of entries) {

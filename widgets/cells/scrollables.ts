@@ -2,8 +2,9 @@
  * Boxes that scroll sideways (display math, code wider than the column on a
  * phone) must be reachable by keyboard, or a keyboard reader cannot see
  * their end. Only boxes that do overflow become focusable: a tab stop on
- * every formula would be noise. Checked at start, whenever the column's
- * width changes, and when fonts finish loading.
+ * every formula would be noise. Checked after the first paint, whenever the
+ * column's width changes, when fonts finish loading, and when prose that was
+ * not laid out comes near the view.
  */
 const SCROLLERS = '.katex-display, pre.cell-code, .cell-output';
 
@@ -18,9 +19,13 @@ function labelOf(box: HTMLElement): string {
   return `${kind} ${index}, scrolls sideways`;
 }
 
-/** Makes `box` focusable and named if it overflows now, or undoes that if it no longer does. */
-export function mark(box: HTMLElement): void {
-  const overflows = box.scrollWidth > box.clientWidth + 1;
+/** Whether `box` is wider inside than it shows: a read of the layout. */
+function overflows(box: HTMLElement): boolean {
+  return box.scrollWidth > box.clientWidth + 1;
+}
+
+/** Makes `box` focusable and named if it `overflows`, or undoes that if it no longer does: writes only. */
+function apply(box: HTMLElement, overflows: boolean): void {
   if (overflows === box.hasAttribute('data-scrollable')) return;
   box.toggleAttribute('data-scrollable', overflows);
   if (overflows) {
@@ -40,19 +45,108 @@ export function mark(box: HTMLElement): void {
   }
 }
 
-/** Marks the overflowing boxes of `root` now, after every change of its width, and when fonts arrive. */
+/**
+ * Marks `boxes`: every width is read before any box is changed. Reading
+ * after each change made the browser lay out the whole chapter once per
+ * box (120 ms of a page's start on this machine, four times that on a slow
+ * phone).
+ */
+function markAll(boxes: readonly HTMLElement[]): void {
+  const shown = boxes.filter(laidOut);
+  const wide = shown.map(overflows);
+  shown.forEach((box, i) => apply(box, wide[i]));
+  for (const box of boxes) if (!laidOut(box)) hidden.add(box);
+  if (hidden.size) whenIdle(markHidden);
+}
+
+/**
+ * Whether the content of `box` is laid out now: not in prose or code far
+ * from the view (global.css), which measures as if it held nothing. The box
+ * may be the skipped block itself, so its content is asked.
+ */
+function laidOut(box: HTMLElement): boolean {
+  const content = box.firstElementChild ?? box;
+  return content.checkVisibility?.({ contentVisibilityAuto: true } as CheckVisibilityOptions) ?? true;
+}
+
+/**
+ * Boxes far from the view still need their marks: a keyboard reader tabs
+ * through the page without bringing each formula into view first. Asking
+ * for their content's geometry lays that content out for the reading, a few
+ * milliseconds each, so it is done a few at a time while the page is idle.
+ */
+const hidden = new Set<HTMLElement>();
+
+function markHidden(deadline: { timeRemaining(): number }): void {
+  // One box at least each time, even when the browser gives no idle time before the timeout.
+  for (const box of hidden) {
+    hidden.delete(box);
+    if (box.isConnected) {
+      (box.firstElementChild ?? box).getBoundingClientRect();
+      apply(box, overflows(box));
+    }
+    if (deadline.timeRemaining() < 2) break;
+  }
+  if (hidden.size) whenIdle(markHidden);
+}
+
+let idleAsked = false;
+
+function whenIdle(task: (deadline: { timeRemaining(): number }) => void): void {
+  if (idleAsked) return;
+  idleAsked = true;
+  const run = (deadline: { timeRemaining(): number }) => {
+    idleAsked = false;
+    task(deadline);
+  };
+  if (typeof requestIdleCallback === 'function') requestIdleCallback(run, { timeout: 2000 });
+  else setTimeout(() => run({ timeRemaining: () => 8 }), 50);
+}
+
+const pending = new Set<HTMLElement>();
+
+/**
+ * Marks `box` just after the next frame is painted, together with every box
+ * asked for until then. The layout is fresh at that moment, so reading it
+ * costs nothing, and a page's start does not wait for a layout of its own.
+ */
+export function markSoon(box: HTMLElement): void {
+  if (pending.size === 0) requestAnimationFrame(() => setTimeout(flush, 0));
+  pending.add(box);
+}
+
+function flush(): void {
+  const boxes = [...pending].filter((box) => box.isConnected);
+  pending.clear();
+  markAll(boxes);
+}
+
+/** Marks the overflowing boxes of `root` after the first paint, after every change of its width, and when fonts arrive. */
 export function watchScrollables(root: HTMLElement): void {
-  const all = () => root.querySelectorAll<HTMLElement>(SCROLLERS).forEach(mark);
+  const all = () => root.querySelectorAll<HTMLElement>(SCROLLERS).forEach(markSoon);
   all();
   // A face requested by the first layout (KaTeX's, the code font's) may still be used if it arrives within
   // font-display: optional's short wait, after this first check: the text it sets is wider, and may overflow.
   document.fonts?.addEventListener?.('loadingdone', all);
+  // Prose far from the view is not laid out (global.css, content-visibility), so its boxes measure nothing until
+  // it is first shown. The event does not bubble; it reaches the root on the way down.
+  root.addEventListener(
+    'contentvisibilityautostatechange',
+    (event) => {
+      const block = event.target;
+      if ((event as Event & { skipped?: boolean }).skipped || !(block instanceof HTMLElement)) return;
+      if (block.matches(SCROLLERS)) markSoon(block);
+      block.querySelectorAll<HTMLElement>(SCROLLERS).forEach(markSoon);
+    },
+    { capture: true },
+  );
   if (typeof ResizeObserver !== 'undefined') {
-    let width = root.clientWidth;
-    new ResizeObserver(() => {
-      if (root.clientWidth === width) return;
-      width = root.clientWidth;
-      all();
+    // The width comes from the observer, which reports it after layout; asking the root would force one now.
+    let width: number | undefined;
+    new ResizeObserver(([entry]) => {
+      const changed = width !== undefined && entry.contentRect.width !== width;
+      width = entry.contentRect.width;
+      if (changed) all();
     }).observe(root);
   }
 }

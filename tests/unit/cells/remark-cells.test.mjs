@@ -49,6 +49,18 @@ describe('remarkCells()', () => {
     expect(text.join('')).toBe('{\n  return "a";\n}');
   });
 
+  test('gives the code its number of shown lines, which keeps its place while it is not laid out', async () => {
+    const { tree } = await transform([['cell', 'x = 1'], ['cell', '{\n  return "a";\n}\n\n'], ['cell', 'y = `\n\n`']]);
+    const lines = tree.children.map((cell) => {
+      const pre = cell.data.hChildren[0].children[0].children[0];
+      const shown = [];
+      const walk = (node) => (node.type === 'text' ? shown.push(node.value) : node.children?.forEach(walk));
+      walk(pre);
+      return [pre.properties.style, shown.join('').split('\n').length];
+    });
+    expect(lines).toEqual([['--lines: 1', 1], ['--lines: 3', 3], ['--lines: 3', 3]]);
+  });
+
   test('renders a cell that does not parse, with its error, instead of failing the build', async () => {
     const { tree, file } = await transform([['cell', 'x = = 1']]);
     expect(tree.children[0].data.hProperties.dataCellBuildError).toBe('SyntaxError: Unexpected token (1:4)');
