@@ -477,13 +477,14 @@ async function coldLoads(browser, server, print) {
   const misses = [];
   print(`e. Cold-cache loads, median of ${LOADS} per page, way in and profile; the server compresses text with gzip ` +
     'as static hosts do. "Top": the page opened at its top. "Simulator": opened by a link to its first simulator\'s cell. ' +
-    'JS: gzip of every script fetched before any interaction (the load, then 1.5 s idle). Drawn: navigation to the first ' +
+    'JS: gzip of every script fetched before any interaction (the load, then 1.5 s idle). First paint: navigation to the ' +
+    'first text on screen. Drawn: navigation to the first ' +
     'widget the page\'s scripts made and drew (`data-ready`; formulas the build typeset into the HTML do not count), ' +
     'for "simulator" the simulator itself; "—" when the first view holds none. CLS: layout-shift entries without ' +
     'recent input, worst of both profiles.');
   print();
-  print(`| Page | way in | JS before interaction | heavy modules | drawn (loopback) | drawn (Slow 4G + ${CPU_SLOWDOWN}× CPU) | CLS |`);
-  print('|---|---|---|---|---|---|---|');
+  print(`| Page | way in | JS before interaction | heavy modules | first paint (loopback / throttled) | drawn (loopback) | drawn (Slow 4G + ${CPU_SLOWDOWN}× CPU) | CLS |`);
+  print('|---|---|---|---|---|---|---|---|');
   for (const path of paths) {
     for (const way of ['top', 'simulator']) {
       const plain = results.get(`${profiles[0][0]} ${way} ${path}`);
@@ -495,6 +496,7 @@ async function coldLoads(browser, server, print) {
       const key = way === 'simulator' ? 'simulatorMs' : 'widgetMs';
       const plainMs = median(plain.map((r) => r[key]));
       const slowMs = median(slow.map((r) => r[key]));
+      const paint = `${ms(median(plain.map((r) => r.paintMs)))} / ${ms(median(slow.map((r) => r.paintMs)))}`;
       if (bytes > targets.bytes) misses.push(`${path} (${way}): ${kb(bytes)} of JS`);
       if (heavy.length) misses.push(`${path} (${way}): ${heavy.join(', ')}`);
       if (plainMs > targets.plain) misses.push(`${path} (${way}): drawn at ${ms(plainMs)} on loopback`);
@@ -502,7 +504,7 @@ async function coldLoads(browser, server, print) {
       if (way === 'simulator' && !Number.isFinite(plainMs)) misses.push(`${path}: the simulator never drew`);
       if (!(cls < targets.cls)) misses.push(`${path} (${way}): CLS ${cls.toFixed(4)}`);
       const where = way === 'simulator' ? `#${simulators.get(path)}` : 'top';
-      print(`| \`${path}\` | ${where} | ${kb(bytes)} (${plain[0].jsFiles} files) | ${heavy.length ? heavy.join(', ') : 'none'} | ${ms(plainMs)} | ${ms(slowMs)} | ${cls.toFixed(4)} |`);
+      print(`| \`${path}\` | ${where} | ${kb(bytes)} (${plain[0].jsFiles} files) | ${heavy.length ? heavy.join(', ') : 'none'} | ${paint} | ${ms(plainMs)} | ${ms(slowMs)} | ${cls.toFixed(4)} |`);
     }
   }
   print();

@@ -28,13 +28,13 @@ export const HEAVY = [
 ];
 
 /**
- * Runs in the page before any of its scripts: times the first live widget
- * that becomes ready (one the page's scripts made, not a formula the build
+ * Runs in the page before any of its scripts: times the first contentful
+ * paint (text on screen) and the first live widget that becomes ready (one the page's scripts made, not a formula the build
  * typeset into the HTML, which is "ready" as soon as it is parsed) and the
  * first simulator, and sums layout shifts.
  */
 function instrument() {
-  const marks = { widget: null, simulator: null, cls: 0, shifts: [] };
+  const marks = { widget: null, simulator: null, paint: null, cls: 0, shifts: [] };
   Object.defineProperty(window, '__coldLoad', { value: marks });
   /** The widgets in the built HTML, known once it is parsed. */
   let built = null;
@@ -52,6 +52,9 @@ function instrument() {
     check();
   });
   new MutationObserver(check).observe(document, { subtree: true, childList: true, attributes: true, attributeFilter: ['data-ready'] });
+  new PerformanceObserver((list) => {
+    for (const entry of list.getEntries()) if (entry.name === 'first-contentful-paint') marks.paint = entry.startTime;
+  }).observe({ type: 'paint', buffered: true });
   try {
     new PerformanceObserver((list) => {
       for (const entry of list.getEntries()) {
@@ -114,6 +117,7 @@ export async function coldLoad(context, origin, path, { throttled = false, settl
     jsFiles: urls.length,
     scripts: urls.map((url, i) => ({ name: new URL(url).pathname.split('/').pop(), bytes: bytes[i] })),
     heavy: HEAVY.filter(([, pattern]) => urls.some((url) => pattern.test(url))).map(([name]) => name),
+    paintMs: marks.paint,
     widgetMs: marks.widget,
     simulatorMs: marks.simulator,
     cls: marks.cls,

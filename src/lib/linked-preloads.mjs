@@ -107,9 +107,11 @@ export function preloadScript(simulators, chunks, base) {
     byCell[id] = [...new Set(wanted.map(indexOf))];
   }
   const urls = files.map((file) => `${base}${file}`);
+  // As script text, inline in HTML: no `</script>` may appear in the data.
+  const literal = (value) => JSON.stringify(value).replace(/</g, '\\u003c');
   return (
     `(() => {\n` +
-    `  const cells = ${JSON.stringify(byCell)}, files = ${JSON.stringify(urls)};\n` +
+    `  const cells = ${literal(byCell)}, files = ${literal(urls)};\n` +
     `  let id;\n` +
     `  try { id = decodeURIComponent(location.hash.slice(1)); } catch { return; }\n` +
     `  for (const i of (Object.hasOwn(cells, id) ? cells[id] : [])) {\n` +

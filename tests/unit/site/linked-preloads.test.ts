@@ -95,6 +95,13 @@ describe('src/lib/linked-preloads.mjs: a link to a simulator fetches its modules
     for (const elsewhere of ['', '#', '#cell-plain', '#share=abc', '#%E0%A4%A', '#toString', '#__proto__']) expect([elsewhere, preloadsAt(script, elsewhere)]).toEqual([elsewhere, []]);
   });
 
+  it('writes its data so that nothing in it can end the inline script', () => {
+    const chunks = simulatorChunks(GRAPH, MODULES);
+    const script = preloadScript([{ id: 'cell-</script><b>', views: ['time'] }], chunks, '/');
+    expect(script).not.toMatch(/<\//);
+    expect(preloadsAt(script, `#${encodeURIComponent('cell-</script><b>')}`).length).toBe(4);
+  });
+
   it('puts the script before the stylesheet (a script after one waits for it) and names its hash in the policy', () => {
     const chunks = simulatorChunks(GRAPH, MODULES);
     const html = PAGE(cellHtml('cell-sim', reserve('time')));
