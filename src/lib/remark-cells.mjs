@@ -77,6 +77,11 @@ export function analyzeCell(source) {
   }
 }
 
+/** The lines a cell's code shows: a final newline starts no line of its own in a <pre>. */
+export function lineCount(source) {
+  return source.replace(/\n$/, '').split('\n').length;
+}
+
 /**
  * @param {string} source
  * @param {string} id
@@ -84,11 +89,6 @@ export function analyzeCell(source) {
  * @param {string} [output] HTML of the cell's value when the build could compute it (a typeset formula)
  * @returns {import('hast').Element}
  */
-/** The lines a cell's code shows: a final newline starts no line of its own in a <pre>. */
-export function lineCount(source) {
-  return source.replace(/\n$/, '').split('\n').length;
-}
-
 export function renderCell(source, id, analysis, output) {
   const name = 'spec' in analysis ? analysis.spec.name : null;
   const label = name ? `Code cell ${name}` : 'Code cell';
@@ -102,7 +102,7 @@ export function renderCell(source, id, analysis, output) {
   return h('figure', properties, [
     h('div', { className: ['cell-box'] }, [
       h('div', { className: ['cell-editor'] }, [
-        // Its number of lines keeps its place while it is not laid out (cells.css).
+        // Its number of lines keeps its place while it is not laid out (global.css).
         h('pre', { className: ['cell-code'], tabIndex: 0, ariaLabel: label, style: `--lines: ${lineCount(source)}` }, [
           h('code', { className: [`language-${CELL_CODE_LANGUAGE}`] }, highlightJs(source)),
         ]),

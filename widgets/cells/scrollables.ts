@@ -24,11 +24,11 @@ function overflows(box: HTMLElement): boolean {
   return box.scrollWidth > box.clientWidth + 1;
 }
 
-/** Makes `box` focusable and named if it `overflows`, or undoes that if it no longer does: writes only. */
-function apply(box: HTMLElement, overflows: boolean): void {
-  if (overflows === box.hasAttribute('data-scrollable')) return;
-  box.toggleAttribute('data-scrollable', overflows);
-  if (overflows) {
+/** Makes `box` focusable and named if it is `wide`, or undoes that if it no longer is: writes only. */
+function apply(box: HTMLElement, wide: boolean): void {
+  if (wide === box.hasAttribute('data-scrollable')) return;
+  box.toggleAttribute('data-scrollable', wide);
+  if (wide) {
     box.tabIndex = 0;
     // A named region: a span or div may carry a name only with a role. Code keeps the build's name and role.
     if (box.matches('pre.cell-code')) return;
@@ -52,11 +52,11 @@ function apply(box: HTMLElement, overflows: boolean): void {
  * phone).
  */
 function markAll(boxes: readonly HTMLElement[]): void {
-  const shown = boxes.filter(laidOut);
+  const shown: HTMLElement[] = [];
+  for (const box of boxes) (laidOut(box) ? shown.push(box) : hidden.add(box));
   const wide = shown.map(overflows);
   shown.forEach((box, i) => apply(box, wide[i]));
-  for (const box of boxes) if (!laidOut(box)) hidden.add(box);
-  if (hidden.size) whenIdle(markHidden);
+  if (hidden.size) markHiddenWhenIdle();
 }
 
 /**
@@ -87,17 +87,17 @@ function markHidden(deadline: { timeRemaining(): number }): void {
     }
     if (deadline.timeRemaining() < 2) break;
   }
-  if (hidden.size) whenIdle(markHidden);
+  if (hidden.size) markHiddenWhenIdle();
 }
 
 let idleAsked = false;
 
-function whenIdle(task: (deadline: { timeRemaining(): number }) => void): void {
+function markHiddenWhenIdle(): void {
   if (idleAsked) return;
   idleAsked = true;
   const run = (deadline: { timeRemaining(): number }) => {
     idleAsked = false;
-    task(deadline);
+    markHidden(deadline);
   };
   if (typeof requestIdleCallback === 'function') requestIdleCallback(run, { timeout: 2000 });
   else setTimeout(() => run({ timeRemaining: () => 8 }), 50);
