@@ -34,6 +34,8 @@ const GROUPS = [
   [/widgets\/plots\/spectrum\/|node_modules\/fft\.js\/|widgets\/core\/(spectrum|window|peaks)\.ts/, 'spectrum'],
   [/widgets\/plots\/[^/]+$|widgets\/controls\/(dom|format)\.ts/, 'plots'],
   [/widgets\/data\/(export|download)\.ts|widgets\/core\/(export-meta|csv|json)\.ts/, 'export'],
+  // The page's side of the simulation worker: a simulator loads it only once its model proves costly (driver.ts).
+  [/widgets\/simulator\/(worker-integrator|chunk-protocol|portable-model)\.ts/, 'worker-integrator'],
   [/widgets\/(simulator|controls|data)\//, 'simulator'],
   [/widgets\/core\/analysis\/|widgets\/book\/analysis\.ts/, 'analysis'],
   [/widgets\/core\/(expression\/(?!names|mathjs-instance)|compile-model|js-function\/translate)/, 'compiler'],

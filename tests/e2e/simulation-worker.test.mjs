@@ -1,6 +1,7 @@
 /**
- * Simulators of expression models integrate in a worker (issue 11): a huge
- * batch costs the page no long task, the numbers are those the page itself
+ * Simulators of expression models whose integration costs the page more
+ * than a sixth of the frame budget move to a worker (issue 11), and cheap
+ * ones stay on the page (issue 7): a huge batch costs the page no long task, the numbers are those the page itself
  * computes (the same generated stepper), an opaque JS function still runs on
  * the page within its frame budget, and a restart or a new dt mid-flight
  * never shows a stale sample. On /playground/, whose simulator shows the
@@ -25,6 +26,17 @@ const SIM = '[data-cell="sim"] [data-widget="simulator"]';
 async function playInView(page) {
   await page.locator(SIM).scrollIntoViewIfNeeded();
   await page.evaluate((selector) => document.querySelector(selector).simulator.play(), SIM);
+}
+
+/**
+ * Moves the simulator to the worker at its next frame, whatever the model
+ * costs: the playground's oscillator is far too cheap to go by itself, and
+ * these tests are about what the worker computes.
+ */
+async function moveToWorker(page) {
+  await page.evaluate((selector) => {
+    document.querySelector(selector).simulator.driver.offloadMs = -1;
+  }, SIM);
 }
 
 /** Waits until the simulator integrates in the worker. */
@@ -104,9 +116,28 @@ test('a batch of 100 000 trajectories integrates in the worker: no main-thread t
   await page.close();
 });
 
+test('a cheap model stays on the page: no worker is started or fetched, and time advances', async () => {
+  const { page, problems, requests } = await openChapter(site, '/playground/');
+  await page.waitForSelector(`${SIM}[data-ready]`);
+  await playInView(page);
+  const t0 = await page.evaluate((selector) => document.querySelector(selector).simulator.simulation.t, SIM);
+  await page.waitForTimeout(1500);
+  const { t, integrator, stepsPerSecond } = await page.evaluate((selector) => {
+    const { driver, simulation } = document.querySelector(selector).simulator;
+    return { t: simulation.t, integrator: driver.integrator, stepsPerSecond: driver.stats.stepsPerSecond };
+  }, SIM);
+  console.log(`the playground's oscillator on the page: ${Math.round(stepsPerSecond)} steps a second`);
+  assert.equal(integrator, 'page');
+  assert.ok(t > t0 + 0.5, `t went from ${t0} to ${t}`);
+  assert.deepEqual(requests.filter((url) => /simulation-worker|worker-integrator/.test(url)), []);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 test('the worker computes what the page computes: the same record and state, bit for bit, at the same t', async () => {
   const { page, problems } = await openChapter(site, '/playground/');
   await page.waitForSelector(`${SIM}[data-ready]`);
+  await moveToWorker(page);
   await playInView(page);
   await waitForWorker(page);
   const before = await page.evaluate((selector) => document.querySelector(selector).simulator.simulation.steps, SIM);
@@ -185,6 +216,7 @@ test('a JS-function H the translator cannot read still runs on the page, within 
 test('restarts and new dt mid-flight never show a stale sample: every frame’s record is the new run’s', async () => {
   const { page, problems } = await openChapter(site, '/playground/');
   await page.waitForSelector(`${SIM}[data-ready]`);
+  await moveToWorker(page);
   await playInView(page);
   await waitForWorker(page);
   const report = await page.evaluate(async (selector) => {
@@ -237,11 +269,15 @@ test('restarts and new dt mid-flight never show a stale sample: every frame’s 
 
 test('a blow-up in the worker stops the simulator with the same message as on the page', async () => {
   const { page, problems } = await openChapter(site, '/playground/');
-  // q̈ = 6q⁵ from q = 2 reaches infinity within about 0.04 time units.
+  // q̈ = 6q⁵ from q₀ = 0.4 at rest reaches infinity at t = q₀⁻² ∫₁^∞ dx / √(2(x⁶ − 1)) = 0.4957 / 0.16 = 3.10
+  // (energy conservation; the integral by quadrature), time enough for the worker to take over first.
+  await typeIntoCell(page, 'initial', 'initial = [0.4, 0]');
   await typeIntoCell(page, 'H', 'H = "p^2/2 - q^6"');
   await page.waitForFunction((selector) => document.querySelector(selector)?.simulator?.model?.source === 'p^2/2 - q^6', SIM, { timeout: 30_000 });
   await page.waitForSelector(`${SIM}[data-ready]`);
+  await moveToWorker(page);
   await playInView(page);
+  await waitForWorker(page);
   await page.waitForFunction((selector) => document.querySelector(selector).simulator.simulation.error, SIM, { timeout: 15_000 });
   const { message, reference, alert } = await page.evaluate((selector) => {
     const handle = document.querySelector(selector).simulator;

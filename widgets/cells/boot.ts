@@ -30,7 +30,7 @@ import { INPUT_EVENT, type WidgetInput } from '../controls/widget-input.ts';
 import { currentCellSignal, Notebook } from './runtime.ts';
 import { CellScheduler } from './schedule.ts';
 import { EditStore } from './storage.ts';
-import { isShareFragment } from './share-format.ts';
+import { isShareFragment } from './share-fragment.ts';
 import type { SharedView } from './share-ui.ts';
 import { CellView } from './cell-view.ts';
 

@@ -18,9 +18,10 @@
  * the id of the cell it follows.
  */
 
+import { SHARE_PREFIX as PREFIX } from './share-fragment.ts';
+
 /** The format this code writes; a link with another number is refused, with a message. */
 export const SHARE_VERSION = 1;
-const PREFIX = 'share=';
 
 /** Longest fragment read (browsers accept far longer URLs; no typical edit comes near). */
 export const MAX_FRAGMENT_CHARS = 64_000;
@@ -47,11 +48,6 @@ export interface SharedEdits {
 }
 
 export type DecodedShare = { readonly ok: true; readonly edits: SharedEdits } | { readonly ok: false; readonly message: string };
-
-/** True when `hash` (with or without its `#`) is a shared-edits fragment, well formed or not. */
-export function isShareFragment(hash: string): boolean {
-  return hash.replace(/^#/, '').startsWith(PREFIX);
-}
 
 /** The fragment (without `#`) that carries `edits`. */
 export async function encodeShare(edits: SharedEdits): Promise<string> {

@@ -1,7 +1,7 @@
 import { MAX_SPEED, outside, type Simulation } from '../core/index.ts';
 import { carryOver, DEFAULT_BUDGET, integrateFrame, owedSteps, type Budget } from './frame-budget.ts';
 import type { View } from '../plots/view.ts';
-import { WorkerIntegrator } from './worker-integrator.ts';
+import type { WorkerIntegrator } from './worker-integrator.ts';
 
 /** Measurements of the last frames, for readouts and tests. */
 export interface FrameStats {
@@ -42,6 +42,11 @@ export interface DriverOptions {
 
 const clock = (): number => performance.now();
 
+/** See Driver.offloadMs. */
+const OFFLOAD_MS = DEFAULT_BUDGET.frameMs / 6;
+/** Frames in a row over offloadMs that start the worker: a sixth of a second at 60 Hz, longer than one preempted chunk keeps the smoothed cost up. */
+const COSTLY_FRAMES = 10;
+
 /**
  * Runs a simulation in real time on requestAnimationFrame: each frame
  * integrates the steps real time asks for within a time budget (see
@@ -51,17 +56,24 @@ const clock = (): number => performance.now();
  * sight goes idle; they resume, where they were, when scrolled back), and
  * pauses with the error on a blow-up.
  *
- * A model of generated code (an expression H, portable-model.ts) is
- * integrated in a worker from its first Play on (worker-integrator.ts), the
- * page integrating until the worker has loaded and passed it: frames then only
- * append the samples it computed ahead, so the model's cost falls on no
- * frame. An opaque JS function, or a page where no worker can run,
- * integrates here within the frame budget.
+ * A model of generated code (an expression H, portable-model.ts) moves to
+ * a worker (worker-integrator.ts) once its integration would cost the page
+ * more than `offloadMs` a frame, the page integrating until the worker has loaded
+ * and passed it: frames then only append the samples it computed ahead, so
+ * the model's cost falls on no frame. A cheap model (the book's oscillators
+ * at speed 1 cost microseconds a frame) stays on the page: a worker would
+ * cost it a thread and a download for nothing. An opaque JS function, or a
+ * page where no worker can run, integrates here within the frame budget.
  */
 export class Driver {
   playing = false;
   speed: number;
   readonly stats: FrameStats = { integrateMs: 0, drawMs: 0, steps: 0, stepsPerSecond: 0, pace: 1, frames: 0 };
+  /**
+   * Integration time on the page that a 60 Hz frame asks for at this speed, ms, above which the worker takes
+   * over: a sixth of the frame budget. Below zero it takes over at once, whatever the model costs.
+   */
+  offloadMs = OFFLOAD_MS;
   private raf = 0;
   private last = NaN;
   private carry = 0;
@@ -74,8 +86,12 @@ export class Driver {
   /** False while the element is scrolled out of view (see the class comment). */
   private inView = true;
   private readonly viewObserver: IntersectionObserver | null;
-  /** The worker that integrates for this driver: undefined until the first Play, null when there is none. */
+  /** The worker that integrates for this driver: undefined until a frame costs more than offloadMs, null when there is none. */
   private offload: WorkerIntegrator | null | undefined;
+  /** True while the worker's module is on its way. */
+  private offloading = false;
+  /** Frames in a row whose share of real time would cost the page more than offloadMs. */
+  private costlyFrames = 0;
 
   constructor(
     public simulation: Simulation,
@@ -89,7 +105,8 @@ export class Driver {
     const element = options.element;
     this.viewObserver =
       element && typeof IntersectionObserver !== 'undefined'
-        ? new IntersectionObserver(([entry]) => this.viewChanged(entry.isIntersecting), { rootMargin: '20% 0px' })
+        ? // The last entry is the present: a busy page may deliver several at once (out of view, then back in).
+          new IntersectionObserver((entries) => this.viewChanged(entries[entries.length - 1].isIntersecting), { rootMargin: '20% 0px' })
         : null;
     if (element) this.viewObserver?.observe(element);
   }
@@ -122,7 +139,6 @@ export class Driver {
     this.carry = 0;
     this.views.forEach((v) => v.setPlaying?.(true));
     this.emit('state', { playing: true, error: null });
-    this.startWorker();
     this.schedule();
   }
 
@@ -199,21 +215,33 @@ export class Driver {
     if (this.playing) this.schedule();
   }
 
-  /** Starts the worker at the first Play (not before: a page that only reads loads none). */
+  /** Starts the worker, whose module loads only now: a page whose models are all cheap never fetches it. */
   private startWorker(): void {
-    if (this.offload !== undefined || this.options.worker === false) return;
-    this.offload = WorkerIntegrator.start(
-      this.simulation,
-      () => {
+    if (this.offload !== undefined || this.offloading || this.options.worker === false) return;
+    this.offloading = true;
+    import('./worker-integrator.ts').then(
+      ({ WorkerIntegrator }) => {
+        this.offloading = false;
         if (this.disposed) return;
-        // The page integrated until now; the worker goes on from exactly here.
-        this.offload?.sync(this.simulation);
-        this.carry = 0;
+        this.offload = WorkerIntegrator.start(
+          this.simulation,
+          () => {
+            if (this.disposed) return;
+            // The page integrated until now; the worker goes on from exactly here.
+            this.offload?.sync(this.simulation);
+            this.carry = 0;
+          },
+          () => {
+            // The page takes over from the simulation's present state, which is always consistent.
+            this.offload = null;
+            this.carry = 0;
+          },
+        );
       },
       () => {
-        // The page takes over from the simulation's present state, which is always consistent.
+        // Offline after the page loaded, say: the page goes on integrating.
+        this.offloading = false;
         this.offload = null;
-        this.carry = 0;
       },
     );
   }
@@ -278,6 +306,11 @@ export class Driver {
         integrateMs = work.ms;
         // Until the worker has passed the page (handingOver), it is asked ahead of where the page is.
         offload?.request(sim, this.targetRate);
+        // What real time asks of a 60 Hz frame, from the smoothed cost of a step: one slow frame (a cold JIT, a
+        // collection, a busy machine) is no reason to start a worker; a model that is costly frame after frame is.
+        const demandMs = (this.cost * this.targetRate) / 60;
+        this.costlyFrames = demandMs > this.offloadMs ? this.costlyFrames + 1 : 0;
+        if (this.costlyFrames >= COSTLY_FRAMES) this.startWorker();
       }
       const rate = (steps * 1000) / Math.max(1, Math.min(elapsed, this.budget.maxElapsedMs));
       const s = this.stats;

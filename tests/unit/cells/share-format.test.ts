@@ -3,12 +3,12 @@ import {
   decodeShare,
   encodeShare,
   fromBase64Url,
-  isShareFragment,
   MAX_INFLATED_BYTES,
   SHARE_VERSION,
   toBase64Url,
   type SharedEdits,
 } from '../../../widgets/cells/share-format.ts';
+import { isShareFragment } from '../../../widgets/cells/share-fragment.ts';
 
 /** The fragment of a wire object, packed as encodeShare packs one, but with any content (for malformed cases). */
 async function pack(wire: unknown, version = SHARE_VERSION): Promise<string> {

@@ -16,6 +16,8 @@ describe('src/lib/chunks.mjs: what loads together', () => {
       'widgets/core/window.ts': 'spectrum',
       'widgets/simulator/driver.ts': 'simulator',
       'widgets/controls/transport.ts': 'simulator',
+      'widgets/simulator/worker-integrator.ts': 'worker-integrator',
+      'widgets/simulator/portable-model.ts': 'worker-integrator',
       'widgets/data/export.ts': 'export',
       'widgets/core/canonical-equations.ts': 'model',
       'widgets/core/integrators/dormand-prince.ts': 'model',
