@@ -46,6 +46,14 @@ function apply(box: HTMLElement, wide: boolean): void {
 }
 
 /**
+ * Boxes far from the view still need their marks: a keyboard reader tabs
+ * through the page without bringing each formula into view first. Asking
+ * for their content's geometry lays that content out for the reading, a few
+ * milliseconds each, so it is done a few at a time while the page is idle.
+ */
+const hidden = new Set<HTMLElement>();
+
+/**
  * Marks `boxes`: every width is read before any box is changed. Reading
  * after each change made the browser lay out the whole chapter once per
  * box (120 ms of a page's start on this machine, four times that on a slow
@@ -59,30 +67,25 @@ function markAll(boxes: readonly HTMLElement[]): void {
   if (hidden.size) markHiddenWhenIdle();
 }
 
-/**
- * Whether the content of `box` is laid out now: not in prose or code far
- * from the view (global.css), which measures as if it held nothing. The box
- * may be the skipped block itself, so its content is asked.
- */
-function laidOut(box: HTMLElement): boolean {
-  const content = box.firstElementChild ?? box;
-  return content.checkVisibility?.({ contentVisibilityAuto: true } as CheckVisibilityOptions) ?? true;
+/** What is inside `box`: the box may be a block skipped far from the view itself, so its content is asked. */
+function contentOf(box: HTMLElement): Element {
+  return box.firstElementChild ?? box;
 }
 
 /**
- * Boxes far from the view still need their marks: a keyboard reader tabs
- * through the page without bringing each formula into view first. Asking
- * for their content's geometry lays that content out for the reading, a few
- * milliseconds each, so it is done a few at a time while the page is idle.
+ * Whether the content of `box` is laid out now: not in prose or code far
+ * from the view (global.css), which measures as if it held nothing.
  */
-const hidden = new Set<HTMLElement>();
+function laidOut(box: HTMLElement): boolean {
+  return contentOf(box).checkVisibility?.({ contentVisibilityAuto: true } as CheckVisibilityOptions) ?? true;
+}
 
 function markHidden(deadline: { timeRemaining(): number }): void {
   // One box at least each time, even when the browser gives no idle time before the timeout.
   for (const box of hidden) {
     hidden.delete(box);
     if (box.isConnected) {
-      (box.firstElementChild ?? box).getBoundingClientRect();
+      contentOf(box).getBoundingClientRect();
       apply(box, overflows(box));
     }
     if (deadline.timeRemaining() < 2) break;

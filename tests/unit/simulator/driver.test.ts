@@ -3,7 +3,7 @@
  * replaced by ones the test works by hand: frames run when the test says,
  * and the test says when the simulator goes out of view and back.
  */
-import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
+import { afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
 import { canonicalEquations } from '../../../widgets/core/canonical-equations.ts';
 import { Simulation } from '../../../widgets/core/simulation.ts';
 import { Driver } from '../../../widgets/simulator/driver.ts';
@@ -63,21 +63,23 @@ function countedWorkers() {
 }
 
 describe('Driver', () => {
+  let model: Awaited<ReturnType<typeof canonicalEquations>>;
+  beforeAll(async () => {
+    model = await canonicalEquations({ dof: 1, hamiltonian: 'p^2/2 + q^2/2' });
+  });
   beforeEach(() => {
     vi.stubGlobal('document', { visibilityState: 'visible', addEventListener() {}, removeEventListener() {} });
   });
   afterEach(() => vi.unstubAllGlobals());
 
-  it('goes on computing when the view reports, in one delivery, that the simulator left and came back', async () => {
+  it('goes on computing when the view reports, in one delivery, that the simulator left and came back', () => {
     const raf = animationFrames();
     const view = viewObserver();
-    const model = await canonicalEquations({ dof: 1, hamiltonian: 'p^2/2 + q^2/2' });
     const simulation = new Simulation(model, { initial: [1, 0], dt: 1e-3 });
     const driver = new Driver(simulation, [], { element: { isConnected: true } as HTMLElement, worker: false });
     driver.play();
     raf.frames(3);
-    const running = simulation.t;
-    expect(running).toBeGreaterThan(0);
+    expect(simulation.t).toBeGreaterThan(0);
 
     // Out of view: nothing is computed, and no frame is asked for.
     view.deliver(false);
@@ -97,7 +99,6 @@ describe('Driver', () => {
     const raf = animationFrames();
     viewObserver();
     const workers = countedWorkers();
-    const model = await canonicalEquations({ dof: 1, hamiltonian: 'p^2/2 + q^2/2' });
 
     // At speed 1, 1000 steps a second: a few microseconds a frame.
     const cheap = new Driver(new Simulation(model, { initial: [1, 0], dt: 1e-3 }), [], { element: { isConnected: true } as HTMLElement });
