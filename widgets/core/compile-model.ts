@@ -8,7 +8,7 @@ import { codeMethodOf, COMPILED_FORMAT, hamiltonianSource, modelKey, type Compil
 import { InputError } from './errors.ts';
 import { compileExpression } from './expression/compile-expression.ts';
 import { stateNames } from './expression/names.ts';
-import { functionFromSource, isFunctionSource, parseFunction } from './js-function/function-source.ts';
+import { isFunctionSource, isStackOverflow, parseFunction, requireFunctionExpression } from './js-function/function-source.ts';
 import { translateFunction } from './js-function/translate.ts';
 
 /**
@@ -35,15 +35,17 @@ export async function compileModel(spec: ModelKeySpec, control: BuildControl = {
   const withMethod = method ? { method } : {};
 
   if (typeof spec.hamiltonian === 'string' && !isFunctionSource(spec.hamiltonian)) {
-    const { code, latex } = await compileExpression({ ...expression, source }, control);
+    const { code, latex } = await deepTreesSaid(source, () => compileExpression({ ...expression, source }, control));
     return { ...common, ...withMethod, route: 'expression', code, latex };
   }
   const program = await parseFunction(source);
+  // Decided from the tree: compiling never runs any of H's code, so that what H's code may do is up to whoever builds the model.
+  if (typeof spec.hamiltonian === 'string') requireFunctionExpression(program);
   if (spec.differentiation !== 'stencil') {
-    const translated = translateFunction(program, names, paramNames);
+    const translated = await deepTreesSaid(source, () => translateFunction(program, names, paramNames));
     if ('expression' in translated) {
       try {
-        const { code, latex } = await compileExpression({ ...expression, source: translated.expression }, control);
+        const { code, latex } = await deepTreesSaid(source, () => compileExpression({ ...expression, source: translated.expression }, control));
         return { ...common, ...withMethod, route: 'js-translated', code, latex };
       } catch (error) {
         // A function mathjs cannot differentiate: finite differences still work.
@@ -51,7 +53,22 @@ export async function compileModel(spec: ModelKeySpec, control: BuildControl = {
       }
     }
   }
-  // Built once here so that source which is no function fails now, with its reason.
-  if (typeof spec.hamiltonian === 'string') functionFromSource(source, paramNames, new Float64Array(paramNames.length));
   return { ...common, ...withMethod, route: 'js-stencil' };
+}
+
+/**
+ * A step of the compile, with a stack overflow said as what it is: mathjs
+ * and the translator walk H's tree by recursion, and a sum of some thousands
+ * of terms is a tree that deep, which exhausts the stack. The reader gets one
+ * sentence about H instead of V8's RangeError.
+ */
+async function deepTreesSaid<T>(source: string, compile: () => T | Promise<T>): Promise<T> {
+  try {
+    return await compile();
+  } catch (error) {
+    if (!isStackOverflow(error)) throw error;
+    throw new InputError(
+      `H is too deeply nested for the compiler (${source.length} characters): a sum of thousands of terms is a tree that deep; group the terms in parentheses`,
+    );
+  }
 }

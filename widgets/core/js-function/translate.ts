@@ -125,7 +125,7 @@ class Translator {
     const bound = this.scope.get(name);
     if (bound) return bound;
     if (this.params.has(name)) return name;
-    if (name in MATH_CONSTANTS) return MATH_CONSTANTS[name];
+    if (Object.hasOwn(MATH_CONSTANTS, name)) return MATH_CONSTANTS[name];
     throw new Untranslatable(`the free name ${name}`);
   }
 
@@ -137,7 +137,7 @@ class Translator {
       if (typeof i === 'number' && Number.isInteger(i) && i >= 0 && i < this.names.length) return this.names[i];
       throw new Untranslatable(`the state index ${String(i)}`);
     }
-    if (object.type === 'Identifier' && object.name === 'Math' && !node.computed && property.name in MATH_CONSTANTS) {
+    if (object.type === 'Identifier' && object.name === 'Math' && !node.computed && Object.hasOwn(MATH_CONSTANTS, property.name)) {
       return MATH_CONSTANTS[property.name];
     }
     throw new Untranslatable('a property access');
@@ -152,7 +152,8 @@ class Translator {
     }
     if (!name) throw new Untranslatable('a call of something other than a Math function');
     const args = (node.arguments as N[]).map((a) => this.expr(a));
-    const rewrite = MATH_REWRITES[name];
+    // Own keys only: a name such as constructor must not find Object's.
+    const rewrite = Object.hasOwn(MATH_REWRITES, name) ? MATH_REWRITES[name] : undefined;
     if (rewrite) return rewrite(args);
     if (SUPPORTED_FUNCTIONS.has(name)) return `${name}(${args.join(', ')})`;
     throw new Untranslatable(`the function ${name}`);
