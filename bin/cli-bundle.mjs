@@ -24,6 +24,8 @@ export const ROOT = fileURLToPath(new URL('..', import.meta.url));
 export const OUT_DIR = join(ROOT, 'build', 'cli');
 const ENTRY = 'widgets/cli/main.ts';
 const WORKER_ENTRY = 'widgets/cli/batch-worker.ts';
+/** The sandbox in which the user's JavaScript runs, a process of its own (widgets/cli/sandbox-process.ts). */
+const SANDBOX_ENTRY = 'widgets/cli/sandbox-child.ts';
 /** Bumped when the manifest's layout changes, so an old one reads as stale. */
 const MANIFEST_FORMAT = 1;
 
@@ -81,8 +83,8 @@ export async function buildCli({ outDir = OUT_DIR, root = ROOT, clean = false } 
   const builtAt = Date.now() - 50;
   const result = await build({
     absWorkingDir: root,
-    // The worker threads of a dataset run load their own entry (widgets/cli/dataset-executors.ts).
-    entryPoints: [ENTRY, WORKER_ENTRY].filter((entry) => existsSync(join(root, entry))),
+    // The worker threads of a dataset run load their own entry (widgets/cli/dataset-executors.ts), and so does the sandbox.
+    entryPoints: [ENTRY, WORKER_ENTRY, SANDBOX_ENTRY].filter((entry) => existsSync(join(root, entry))),
     outdir: outDir,
     bundle: true,
     splitting: true,

@@ -8,7 +8,8 @@
  * the machine, the time or the number of workers: the same run writes the
  * same meta.
  */
-import { type ExportMeta, methodChoice, methodMeta, type Model, VERSION } from '../core/index.ts';
+import { type ExportMeta, methodMeta, VERSION } from '../core/index.ts';
+import type { ModelFacts } from './model-facts.ts';
 import type { RunSpec, SetSpec } from './run-spec.ts';
 
 export interface DatasetMeta extends ExportMeta {
@@ -30,7 +31,7 @@ export interface DatasetMeta extends ExportMeta {
 
 export interface MetaInputs {
   spec: RunSpec;
-  model: Model;
+  model: ModelFacts;
   steps: number;
   samples: number;
   columns: string[];
@@ -62,7 +63,7 @@ export function datasetMeta({ spec, model, steps, samples, columns, total, first
   meta.names = [...model.names];
   if (spec.coordinates) meta.coordinates = spec.coordinates;
   if (spec.momenta) meta.momenta = spec.momenta;
-  meta.derived = model.hamiltonian ? ['H'] : [];
+  meta.derived = model.hasHamiltonian ? ['H'] : [];
   meta.derivatives = spec.derivatives;
   meta.columns = columns;
   meta.version = VERSION;
@@ -86,35 +87,4 @@ export function unshardedMeta(meta: DatasetMeta): DatasetMeta {
   const whole = { ...meta, count: meta.trajectories };
   delete whole.shard;
   return whole;
-}
-
-/** The spec a meta describes, to run it again. */
-export function specFromMeta(meta: DatasetMeta): RunSpec {
-  const set: SetSpec =
-    meta.initialSet.kind === 'given'
-      ? { kind: 'given', values: meta.initial, ...(meta.initialSet.file !== undefined ? { file: meta.initialSet.file as string } : {}) }
-      : (meta.initialSet as unknown as SetSpec);
-  const vectorField = typeof meta.vectorField === 'string' ? meta.vectorField : undefined;
-  // A file from before methods were a choice says rk38; an unknown name is an InputError.
-  const method = methodChoice(meta.method ?? 'rk38', meta.rtol, meta.atol);
-  return {
-    hamiltonian: vectorField !== undefined && meta.hamiltonian === '' ? undefined : meta.hamiltonian,
-    vectorField,
-    dof: meta.dof,
-    params: meta.params,
-    paramExpressions: meta.paramExpressions as Record<string, string> | undefined,
-    coordinates: meta.coordinates as string[] | undefined,
-    momenta: meta.momenta as string[] | undefined,
-    dt: meta.dt,
-    ...(method.name === 'rk38' ? {} : { method }),
-    t0: meta.t0,
-    tEnd: meta.tEnd,
-    every: meta.every,
-    times: meta.times,
-    set,
-    derivatives: meta.derivatives,
-    format: meta.format as RunSpec['format'],
-    layout: (meta.layout as RunSpec['layout']) ?? 'long',
-    shard: meta.shard ? { index: meta.shard.index, of: meta.shard.of } : undefined,
-  };
 }

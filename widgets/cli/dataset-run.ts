@@ -4,15 +4,16 @@
  * (or here, for a small run) and handed to a writer in its order.
  */
 import { availableParallelism } from 'node:os';
-import { type Axis, fillInitial, type InitialSet, InputError, type Model, type Range, rowColumns, stepsTo, trajectoryCount } from '../core/index.ts';
+import { type Axis, type InitialSet, InputError, type Range, rowColumns, stepsTo, trajectoryCount } from '../core/index.ts';
 import { datasetMeta, type DatasetMeta } from './dataset-meta.ts';
-import { localExecutor, workerExecutor, type Executor } from './dataset-executors.ts';
 import { BLOCK_VALUES, planTasks, TEXT_BLOCK_VALUES } from './dataset-plan.ts';
 import { schedule } from './dataset-schedule.ts';
 import { sampleTimes, type TaskSetup, type TimesSpec } from './dataset-task.ts';
 import type { DatasetShape, DatasetWriter } from './formats/dataset-shape.ts';
-import { checkEvaluates, modelFromRecipe, modelRecipe, type ModelRecipe } from './model.ts';
+import type { ModelRecipe } from './model.ts';
+import { factsOfRecipe } from './model-facts.ts';
 import { progressBar } from './progress.ts';
+import { openRunModel, type RunModel } from './run-model.ts';
 import { checkRunSize, datasetSize } from './run-size.ts';
 import { shardRange, type RunSpec } from './run-spec.ts';
 
@@ -27,7 +28,8 @@ const WORKER_THRESHOLD_STEPS = 5_000_000;
 export interface PreparedRun {
   spec: RunSpec;
   recipe: ModelRecipe;
-  model: Model;
+  /** the model, here or in its sandbox; close it when the run is over */
+  model: RunModel;
   set: InitialSet;
   times: TimesSpec;
   shape: DatasetShape;
@@ -68,26 +70,36 @@ export function timesOf(spec: RunSpec): { times: TimesSpec; steps: number } {
   return { times: { kind: 'every', t0: spec.t0, dt: spec.dt, steps, every: spec.every }, steps: spec.every * Math.floor(steps / spec.every) };
 }
 
-/** Builds everything a run needs and checks it, before any output: the model, a first initial state that evaluates, the size. */
-export async function prepareRun(spec: RunSpec, options: { cache: boolean; force: boolean }): Promise<PreparedRun> {
+/**
+ * Builds everything a run needs from its spec and its model's recipe, and
+ * checks it before any output: the size first (a run refused for its size
+ * starts no sandbox), then the model, evaluated at a first initial state.
+ * `signal` stops a sandbox's first evaluation, which the user's code may
+ * never end.
+ */
+export async function prepareRun(spec: RunSpec, recipe: ModelRecipe, options: { force: boolean; signal?: AbortSignal }): Promise<PreparedRun> {
   const { times, steps } = timesOf(spec);
   const samples = sampleTimes(times).count;
-  const recipe = await modelRecipe({ ...spec, cache: options.cache });
-  const model = await modelFromRecipe(recipe);
-  const set = initialSet(spec, model.names);
+  // What the file says of the model comes from the recipe, not from code that may run in a sandbox.
+  const facts = factsOfRecipe(recipe);
+  const set = initialSet(spec, facts.names);
   const total = trajectoryCount(set);
   if (spec.shard && spec.shard.index > spec.shard.of) throw new InputError(`--shard ${spec.shard.index}/${spec.shard.of}: the shard number runs from 1 to ${spec.shard.of}`);
   const { first, end } = shardRange(total, spec.shard);
   const count = end - first;
-  const columns = rowColumns(model, spec.derivatives);
+  const columns = rowColumns({ names: facts.names, hamiltonian: facts.hasHamiltonian || undefined }, spec.derivatives);
   const size = datasetSize({ steps, samples, trajectories: count, columns: columns.length + (total > 1 ? 1 : 0), format: spec.format });
   checkRunSize(size, options.force);
-  // The first state of the set, evaluated: a JS H that throws or returns a string, an energy no point reaches, are said now.
-  const probe = new Float64Array(model.dim);
-  fillInitial(set, first < end ? first : 0, 1, probe, { dim: model.dim, hamiltonian: model.hamiltonian, t0: spec.t0, names: model.names });
-  checkEvaluates(model, probe, spec.t0);
-  const shape: DatasetShape = { columns, names: model.names, count, first, total, samples };
-  const meta = datasetMeta({ spec, model, steps, samples, columns, total, first, count });
+  const model = await openRunModel(recipe, options.signal);
+  try {
+    // The first state of the set, evaluated: a JS H that throws or returns a string, an energy no point reaches, are said now.
+    await model.probe(set, first < end ? first : 0, spec.t0);
+  } catch (error) {
+    await model.close();
+    throw error;
+  }
+  const shape: DatasetShape = { columns, names: facts.names, count, first, total, samples };
+  const meta = datasetMeta({ spec, model: facts, steps, samples, columns, total, first, count });
   return { spec, recipe, model, set, times, shape, meta, steps };
 }
 
@@ -110,10 +122,11 @@ export function defaultWorkers(): number {
 
 /** Computes every trajectory of the prepared run and writes them with `writer`, in its order. */
 export async function executeRun(run: PreparedRun, writer: DatasetWriter, options: ExecuteOptions): Promise<void> {
-  const { shape, model, spec } = run;
+  const { shape, spec } = run;
   const total = run.steps * shape.count;
   const wanted = options.workers !== undefined ? Math.max(1, options.workers) : total < WORKER_THRESHOLD_STEPS ? 1 : defaultWorkers();
-  const text = writerText(writer);
+  // Rows are formatted where they are computed when that is here or a worker thread; a sandbox sends numbers, formatted here.
+  const text = run.model.formatsText ? writerText(writer) : undefined;
   const plan = planTasks({ ...shape, width: shape.columns.length }, writer.order, wanted, options.timeChunkRows ?? shape.samples, text ? TEXT_BLOCK_VALUES : BLOCK_VALUES);
   const workers = Math.max(1, Math.min(wanted, plan.runs));
   const ahead = 2 * workers + 2;
@@ -138,16 +151,13 @@ export async function executeRun(run: PreparedRun, writer: DatasetWriter, option
     if (options.status) options.status.steps = done;
     bar?.update(total > 0 ? done / total : 1, label());
   };
-  const executors: Executor[] =
-    workers === 1
-      ? [localExecutor(model, setup, options.signal, advance)]
-      : Array.from({ length: workers }, () => workerExecutor({ recipe: run.recipe, setup }));
+  const { executors, ownProgress } = await run.model.executors(workers, setup, { width: shape.columns.length, signal: options.signal, tick: advance });
   try {
     await schedule(plan, executors, {
       order: writer.order,
       ahead,
       write: (task, result) => writer.write({ first: task.first, count: task.count, rowFrom: task.rowFrom, rowTo: task.rowTo, data: result.data, text: result.text }),
-      done: workers === 1 ? undefined : (result) => advance(result.steps),
+      done: ownProgress ? undefined : (result) => advance(result.steps),
       signal: options.signal,
     });
   } finally {

@@ -1,23 +1,31 @@
 /**
- * A JS function written on the command line — a vector field
- * `(t, x, dxdt) => { … }`, or H `(t, x) => …` beside one — with the
- * parameters and Math's functions visible by name, as they are to a JS
- * function given as --hamiltonian. Built by `new Function` alone, without a
- * parser, so that a vector-field run loads neither acorn nor mathjs.
+ * The user's JavaScript — a vector field `(t, x, dxdt) => { … }`, an H
+ * `(t, x) => …` beside one, or an H left opaque for finite differences — as
+ * a function, with the parameters and Math's functions visible by name.
+ *
+ * Only the sandbox (sandbox-child.ts) makes these: the CLI itself never runs
+ * the user's code. The source is compiled by node:vm, not by `new Function`,
+ * for two reasons: the sandbox forbids making code from strings, which
+ * `new Function` is and node:vm is not; and code compiled without an
+ * `importModuleDynamically` hook cannot `import()` any module, Node's own
+ * included. No parser is loaded, so a vector-field run loads neither acorn
+ * nor mathjs.
  */
+import { compileFunction } from 'node:vm';
 import { checkName, InputError, isFunctionSource, MATH_NAMES } from '../core/index.ts';
 
 /**
- * The function `source` evaluates to. `option` names the command-line option
- * in messages and `shape` shows its expected form.
+ * The function `source` evaluates to, with the parameters fixed at their
+ * values. `what` names the code in messages (--vector-field, H) and `shape`
+ * shows its expected form.
  */
 export function functionFromArgument(
   source: string,
-  option: string,
+  what: string,
   shape: string,
   params: Readonly<Record<string, number>>,
 ): (...args: never[]) => unknown {
-  if (!isFunctionSource(source)) throw new InputError(`${option} must be a JS function ${shape}, not "${source}"`);
+  if (!isFunctionSource(source)) throw new InputError(`${what} must be a JS function ${shape}, not "${source}"`);
   const paramNames = Object.keys(params);
   for (const name of paramNames) {
     try {
@@ -31,12 +39,12 @@ export function functionFromArgument(
   const math = Math as unknown as Record<string, unknown>;
   let value: unknown;
   try {
-    const make = new Function(...paramNames, ...mathNames, `"use strict";\nreturn (${source}\n);`);
+    const make = compileFunction(`"use strict";\nreturn (${source}\n);`, [...paramNames, ...mathNames]);
     value = make(...paramNames.map((name) => params[name]), ...mathNames.map((name) => math[name]));
   } catch (error) {
     const kind = error instanceof SyntaxError ? 'syntax error' : 'error';
-    throw new InputError(`${kind} in ${option}: ${(error as Error).message}`);
+    throw new InputError(`${kind} in ${what}: ${(error as Error)?.message ?? String(error)}`);
   }
-  if (typeof value !== 'function') throw new InputError(`${option} must be a JS function ${shape}`);
+  if (typeof value !== 'function') throw new InputError(`${what} must be a JS function ${shape}`);
   return value as (...args: never[]) => unknown;
 }

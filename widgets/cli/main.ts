@@ -29,6 +29,11 @@ another drawn. --shard i/n computes the i-th of n slices of the set, and
 merge joins the slices into the file the whole run writes. reproduce runs a
 JSON, NPZ or Parquet file again from its meta and compares every number.
 
+JavaScript that does not translate to an expression (an opaque H, a vector
+field) runs in a sandbox: a Node process with no file writes, no processes
+and no environment. reproduce runs a file's JavaScript only with
+--trust-code; without it, it shows the code and stops.
+
 A run of more than ${count(STEP_LIMIT)} steps or about ${byteSize(OUTPUT_LIMIT)} of output is refused unless
 --force is given. --output FILE appears only when complete; Ctrl-C (SIGINT) or
 SIGTERM removes the partial file and exits with status 130 or 143.

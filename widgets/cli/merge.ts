@@ -2,9 +2,14 @@
  * `phasebook merge --output FILE SHARD…`: joins the shards of one run
  * (`simulate … --shard i/n`) into the file the whole run would have written,
  * byte for byte. The shards must all be there, once each, and come from one
- * spec: their metas must agree in everything but the shard.
+ * spec: their metas must agree in everything but the shard. A shard is data
+ * from whoever made it: every row is checked as it is read
+ * (formats/dataset-read.ts), every message names the file it is about, and
+ * SIGINT or SIGTERM stops the merge and removes its partial output, as they
+ * stop simulate.
  */
 import { InputError } from '../core/index.ts';
+import { breather } from './breather.ts';
 import { BLOCK_VALUES } from './dataset-plan.ts';
 import { unshardedMeta, type DatasetMeta } from './dataset-meta.ts';
 import type { DatasetShape, DatasetWriter } from './formats/dataset-shape.ts';
@@ -12,7 +17,7 @@ import { openDataset, type DatasetFile } from './formats/dataset-read.ts';
 import { NpzDatasetWriter } from './formats/npz-dataset.ts';
 import { ParquetDatasetWriter } from './formats/parquet-dataset.ts';
 import { TextDatasetWriter } from './formats/text-dataset.ts';
-import { InterruptGuard } from './interrupt.ts';
+import { Interrupted, InterruptGuard } from './interrupt.ts';
 import { fileSink, type Sink } from './output.ts';
 import { shardRange } from './run-spec.ts';
 
@@ -89,6 +94,8 @@ export async function mergeCommand(argv: readonly string[]): Promise<string> {
     const shape: DatasetShape = { ...shards[0].shape, count: meta.trajectories, first: 0 };
     const guard = new InterruptGuard();
     const sink = fileSink(output, guard);
+    // Reading shards resolves its promises at once, in microtasks: the merge returns to the event loop now and then to hear a signal.
+    const breathe = breather(guard.signal);
     let writer: DatasetWriter | undefined;
     try {
       writer = writerFor(shards[0], sink, shape, meta, output);
@@ -99,26 +106,28 @@ export async function mergeCommand(argv: readonly string[]): Promise<string> {
           const next = await Promise.all(streams.map((s) => s.next()));
           if (next.every((n) => n.done)) break;
           for (const n of next) if (!n.done) writer.write(n.value);
-          guard.signal.throwIfAborted();
+          await breathe();
         }
       } else {
         for (const shard of shards) {
           for await (const block of shard.blocks(BLOCK_VALUES)) {
             writer.write(block);
-            guard.signal.throwIfAborted();
+            await breathe();
           }
         }
       }
+      guard.signal.throwIfAborted();
       writer.finish();
       sink.commit();
     } catch (error) {
       writer?.abandon();
       sink.abandon();
+      if (error instanceof Interrupted) throw new Interrupted(error.signal, `; ${output} was not written`);
       throw error;
     } finally {
       guard.release();
     }
-    return "";
+    return '';
   } finally {
     for (const file of files) file.close();
   }

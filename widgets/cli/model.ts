@@ -8,9 +8,14 @@
  * model built from it, which needs no compiler. Every worker thread builds
  * its model from the same recipe, so all run the same generated code: the
  * numbers are the same whichever thread computes a trajectory.
+ *
+ * Making a recipe never runs the user's code: an expression, or a JS
+ * function that translates to one, becomes generated code; any other JS is
+ * only parsed. A recipe that needs the user's JavaScript to run (userCodeOf)
+ * is built only in the sandbox (user-model.ts, run-model.ts); this module
+ * builds the others.
  */
-import { canonicalEquations, type CompiledModel, compiledModelFor, DEFAULT_METHOD, firstEvaluation, InputError, isFunctionSource, type MethodChoice, type Model, modelFromCompiled, type OpaqueHamiltonian, type Stepper, type VectorField } from '../core/index.ts';
-import { functionFromArgument } from './js-source.ts';
+import { compiledModelFor, type CompiledModel, DEFAULT_METHOD, firstEvaluation, InputError, isFunctionSource, type MethodChoice, type Model, modelFromCompiled } from '../core/index.ts';
 import { diskModelStore, modelCacheDirectory } from './model-cache.ts';
 
 export interface ModelArguments {
@@ -34,8 +39,8 @@ export type ModelRecipe =
   | { kind: 'compiled'; compiled: CompiledModel; params: Record<string, number>; method?: MethodChoice }
   | { kind: 'field'; dof: number; vectorField: string; hamiltonian?: string; params: Record<string, number>; coordinates?: string[]; momenta?: string[]; method?: MethodChoice };
 
-const FIELD_SHAPE = '(t, x, dxdt) => { dxdt[0] = …; … }';
-const H_SHAPE = '(t, x) => …';
+export const FIELD_SHAPE = '(t, x, dxdt) => { dxdt[0] = …; … }';
+export const H_SHAPE = '(t, x) => …';
 
 /** The recipe of the model `args` describe: compiles H (or takes it from the cache) when there is one to compile. */
 export async function modelRecipe(args: ModelArguments): Promise<ModelRecipe> {
@@ -53,63 +58,20 @@ export async function modelRecipe(args: ModelArguments): Promise<ModelRecipe> {
   return { kind: 'field', dof, vectorField: args.vectorField, hamiltonian: args.hamiltonian, params, coordinates, momenta, method };
 }
 
-/** The running model of a recipe; no compiler is loaded. */
-export async function modelFromRecipe(recipe: ModelRecipe): Promise<Model> {
-  if (recipe.kind === 'compiled') {
-    const model = modelFromCompiled(recipe.compiled, recipe.params, recipe.compiled.source, recipe.method ?? DEFAULT_METHOD);
-    return recipe.compiled.route === 'js-stencil' ? userCodeModel(model, 'H') : model;
-  }
-  const { params } = recipe;
-  const vectorField = functionFromArgument(recipe.vectorField, '--vector-field', FIELD_SHAPE, params) as VectorField;
-  const hamiltonian =
-    recipe.hamiltonian === undefined ? undefined : (functionFromArgument(recipe.hamiltonian, '--hamiltonian', H_SHAPE, params) as OpaqueHamiltonian);
-  const model = await canonicalEquations({ dof: recipe.dof, vectorField, hamiltonian, params, coordinates: recipe.coordinates, momenta: recipe.momenta, method: recipe.method });
-  return userCodeModel(model, 'the vector field');
+/** The user's code a recipe runs, named as messages name it, or undefined when it runs only code the compiler generated. */
+export function userCodeOf(recipe: ModelRecipe): { what: 'H' | 'the vector field'; source: string } | undefined {
+  if (recipe.kind === 'field') return { what: 'the vector field', source: recipe.vectorField };
+  return recipe.compiled.route === 'js-stencil' ? { what: 'H', source: recipe.compiled.source } : undefined;
 }
 
-/**
- * A model whose equations run the user's own JavaScript, made to report an
- * exception thrown during the run as the user's (an InputError saying when
- * and what), rather than as an internal error, and H returning anything but
- * a number as such.
- */
-function userCodeModel(model: Model, what: string): Model {
-  const fails = (when: string, error: unknown) => new InputError(`${what} fails ${when}: ${(error as Error)?.message ?? String(error)}`);
-  const advance: Stepper['advance'] = (x, count, params, t0, k0, dt, steps) => {
-    try {
-      return model.stepper.advance(x, count, params, t0, k0, dt, steps);
-    } catch (error) {
-      if (error instanceof InputError) throw error;
-      throw fails(`between t = ${t0 + k0 * dt} and t = ${t0 + (k0 + steps) * dt}`, error);
-    }
-  };
-  const h = model.hamiltonian;
-  return {
-    ...model,
-    stepper: { dim: model.dim, advance },
-    field: (t, x, dxdt) => {
-      try {
-        model.field(t, x, dxdt);
-      } catch (error) {
-        throw fails(`at t = ${t}`, error);
-      }
-    },
-    hamiltonian: h
-      ? (t, x, offset) => {
-          let value: unknown;
-          try {
-            value = h(t, x, offset);
-          } catch (error) {
-            throw new InputError(`H fails at t = ${t}: ${(error as Error)?.message ?? String(error)}`);
-          }
-          if (typeof value !== 'number') throw new InputError(`H must return a number, but returns ${describe(value)} at t = ${t}`);
-          return value;
-        }
-      : undefined,
-  };
+/** The running model of a recipe whose code the compiler generated; no compiler is loaded. */
+export function modelFromRecipe(recipe: ModelRecipe): Model {
+  if (userCodeOf(recipe) || recipe.kind !== 'compiled') throw new Error('a model that runs the user\'s code is built in the sandbox only');
+  return modelFromCompiled(recipe.compiled, recipe.params, recipe.compiled.source, recipe.method ?? DEFAULT_METHOD);
 }
 
-function describe(value: unknown): string {
+/** A value H returned, in words. */
+export function describe(value: unknown): string {
   if (typeof value === 'string') return `the string ${JSON.stringify(value.length > 40 ? value.slice(0, 40) + '…' : value)}`;
   if (value === null) return 'null';
   if (Array.isArray(value)) return 'an array';

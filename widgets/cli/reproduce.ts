@@ -3,20 +3,30 @@
  * (JSON, NPZ or Parquet), into a temporary file of the same format, and
  * compares every number with FILE's, bit for bit. Prints what it found;
  * the status is 0 when every number is the same, 1 when one differs.
+ *
+ * The file's meta is data: it is checked field by field (meta-spec.ts), and
+ * the JavaScript it may carry runs only if it translates to an expression
+ * or the user passes --trust-code, and then in the sandbox (trust-code.ts).
+ * Every message names the file; a signal stops the run and the comparison
+ * alike, leaving no temporary file.
  */
-import { InputError } from '../core/index.ts';
+import { breather } from './breather.ts';
 import { BLOCK_VALUES } from './dataset-plan.ts';
-import { specFromMeta } from './dataset-meta.ts';
-import { executeRun, prepareRun } from './dataset-run.ts';
+import { executeRun, prepareRun, type PreparedRun } from './dataset-run.ts';
 import { datasetWriter } from './dataset-writer.ts';
+import { namingFile } from './file-errors.ts';
 import type { Block } from './formats/dataset-shape.ts';
 import { openDataset, type DatasetFile } from './formats/dataset-read.ts';
-import { InterruptGuard } from './interrupt.ts';
+import { Interrupted, InterruptGuard } from './interrupt.ts';
+import { specFromMeta } from './meta-spec.ts';
+import { modelRecipe } from './model.ts';
 import type { Sink } from './output.ts';
 import { SpillFile } from './spill-file.ts';
 import { parseArgs, wholeNumber } from './args.ts';
+import { admitFileCode } from './trust-code.ts';
+import { InputError } from '../core/index.ts';
 
-export const REPRODUCE_USAGE = 'phasebook reproduce FILE [--workers K] [--no-cache]';
+export const REPRODUCE_USAGE = 'phasebook reproduce FILE [--workers K] [--no-cache] [--trust-code]';
 
 /** Every number of a file's blocks, in order, with where it is. */
 async function* numbers(file: DatasetFile): AsyncGenerator<{ value: number; trajectory: number; row: number; column: number }> {
@@ -35,23 +45,45 @@ async function* numbers(file: DatasetFile): AsyncGenerator<{ value: number; traj
 export async function reproduceCommand(argv: readonly string[]): Promise<{ text: string; status: number }> {
   const [path, ...rest] = argv;
   if (path === undefined || path.startsWith('--')) throw new InputError(`give the file to reproduce (usage: ${REPRODUCE_USAGE})`);
-  const args = parseArgs(rest, { workers: 'value', 'no-cache': 'flag' });
+  const args = parseArgs(rest, { workers: 'value', 'no-cache': 'flag', 'trust-code': 'flag' });
   const workers = args.values.has('workers') ? wholeNumber(args.values.get('workers')!, '--workers') : undefined;
-  const file = await openDataset(path);
   const guard = new InterruptGuard();
   guard.hold();
+  try {
+    return await reproduceFile(path, { workers, cache: !args.flags.has('no-cache'), trustCode: args.flags.has('trust-code'), signal: guard.signal });
+  } catch (error) {
+    if (error instanceof Interrupted) throw new Interrupted(error.signal, `; ${path} was not reproduced`);
+    throw namingFile(error, path, false);
+  } finally {
+    guard.release();
+  }
+}
+
+interface ReproduceOptions {
+  workers?: number;
+  cache: boolean;
+  trustCode: boolean;
+  signal: AbortSignal;
+}
+
+async function reproduceFile(path: string, options: ReproduceOptions): Promise<{ text: string; status: number }> {
+  const file = await openDataset(path);
+  let run: PreparedRun | undefined;
   let rerun: SpillFile | undefined;
   let again: DatasetFile | undefined;
   let writer: ReturnType<typeof datasetWriter> | undefined;
   try {
-    const spec = specFromMeta(file.meta);
-    const run = await prepareRun(spec, { cache: !args.flags.has('no-cache'), force: true });
+    const spec = specFromMeta(file.meta, path);
+    const recipe = await modelRecipe({ ...spec, cache: options.cache });
+    admitFileCode(recipe, path, options.trustCode);
+    run = await prepareRun(spec, recipe, { force: true, signal: options.signal });
     rerun = new SpillFile(undefined, `reproduce.${file.format}`);
     const spill = rerun;
     const sink: Sink = { write: (data) => spill.append(typeof data === 'string' ? Buffer.from(data) : data), commit: () => {}, abandon: () => {} };
     writer = datasetWriter(run, sink, undefined);
-    await executeRun(run, writer.writer, { workers, signal: guard.signal, timeChunkRows: writer.timeChunkRows });
+    await executeRun(run, writer.writer, { workers: options.workers, signal: options.signal, timeChunkRows: writer.timeChunkRows });
     again = await openDataset(rerun.path);
+    const breathe = breather(options.signal);
     const expected = numbers(file);
     const got = numbers(again);
     let compared = 0;
@@ -68,7 +100,8 @@ export async function reproduceCommand(argv: readonly string[]): Promise<{ text:
         const where = file.shape.total > 1 ? `trajectory ${x.trajectory}, ` : '';
         return { text: `${path}: differs at ${where}sample ${x.row}, ${name}: the file has ${x.value}, the run gives ${y.value}\n`, status: 1 };
       }
-      compared++;
+      // The comparison runs in microtasks alone: it returns to the event loop now and then to hear a signal.
+      if (++compared % 4096 === 0) await breathe();
     }
     const { meta } = file;
     const version = meta.version === run.meta.version ? '' : ` (the file was written by phasebook ${meta.version}, this is ${run.meta.version})`;
@@ -78,6 +111,6 @@ export async function reproduceCommand(argv: readonly string[]): Promise<{ text:
     again?.close();
     file.close();
     rerun?.remove();
-    guard.release();
+    await run?.model.close();
   }
 }

@@ -9,6 +9,7 @@ import { number, numberList, parseArgs, positive, wholeNumber } from './args.ts'
 import { executeRun, prepareRun, type PreparedRun } from './dataset-run.ts';
 import { datasetWriter } from './dataset-writer.ts';
 import { readInitialFile } from './initial-file.ts';
+import { modelRecipe, userCodeOf } from './model.ts';
 import { Interrupted, InterruptGuard } from './interrupt.ts';
 import { fileSink, stdoutSink, type Sink } from './output.ts';
 import { parameters } from './parameters.ts';
@@ -208,7 +209,10 @@ export async function simulate(argv: readonly string[]): Promise<void> {
   const status = { steps: 0 };
   let writer: ReturnType<typeof datasetWriter> | undefined;
   try {
-    run = await prepareRun(spec, parsed);
+    const recipe = await modelRecipe({ ...spec, cache: parsed.cache });
+    // The user's code runs in a sandbox, which a signal must stop too: the CLI hears it, whatever the output.
+    if (userCodeOf(recipe)) guard.hold();
+    run = await prepareRun(spec, recipe, { force: parsed.force, signal: guard.signal });
     writer = datasetWriter(run, sink, output);
     // Files kept aside (an NPZ's later arrays) must be removed on Ctrl-C even when stdout is the output.
     if (writer.keepsFiles) guard.hold();
@@ -220,6 +224,7 @@ export async function simulate(argv: readonly string[]): Promise<void> {
     if (error instanceof Interrupted) throw new Interrupted(error.signal, interruptedAt(run, status.steps, output));
     throw error;
   } finally {
+    await run?.model.close();
     guard.release();
   }
 }

@@ -335,12 +335,13 @@ describe('workers and shards', () => {
   it('hands each task to worker threads, which give the numbers this thread gives', async () => {
     // The worker code path itself, in this process (tsx compiles the worker's TypeScript), against the local executor.
     const { prepareRun } = await import('../../../widgets/cli/dataset-run.ts');
+    const { modelFromRecipe, modelRecipe } = await import('../../../widgets/cli/model.ts');
     const { parseSimulate } = await import('../../../widgets/cli/simulate.ts');
     const { localExecutor, workerExecutor } = await import('../../../widgets/cli/dataset-executors.ts');
     const { planTasks } = await import('../../../widgets/cli/dataset-plan.ts');
     const { schedule } = await import('../../../widgets/cli/dataset-schedule.ts');
     const { spec } = parseSimulate([...OSCILLATOR, '--sample', '9', '--seed', '1', '--box', 'q=-1:1,p=-1:1', '--t-end', '2', '--every', '100', '--derivatives']);
-    const run = await prepareRun(spec, { cache: true, force: false });
+    const run = await prepareRun(spec, await modelRecipe({ ...spec, cache: true }), { force: false });
     const setup = { times: run.times, set: run.set, derivatives: true, numberTrajectories: true };
     const collect = async (executors: Parameters<typeof schedule>[1]) => {
       const plan = planTasks({ ...run.shape, width: run.shape.columns.length }, 'trajectory', 3, 0);
@@ -349,7 +350,7 @@ describe('workers and shards', () => {
       await Promise.all(executors.map((e) => e.close()));
       return out;
     };
-    const here = await collect([localExecutor(run.model, setup, undefined, () => {})]);
+    const here = await collect([localExecutor(modelFromRecipe(run.recipe), setup, undefined, () => {})]);
     const threads = await collect([0, 1, 2].map(() => workerExecutor({ recipe: run.recipe, setup })));
     expect(here).toHaveLength(9 * 41 * 6);
     expect(threads).toEqual(here);

@@ -54,6 +54,8 @@ export function zipEntries(fd: number, what: string): Map<string, ZipEntry> {
     size = Number(record.readBigUInt64LE(40));
     start = Number(record.readBigUInt64LE(48));
   }
+  // Sizes from the file itself: one that points past its end is damage, not a reason to allocate gigabytes.
+  if (start + size > fileSize || count > size / 46) throw bad('a central directory beyond the end of the file');
   const directory = readAt(fd, start, size);
   const entries = new Map<string, ZipEntry>();
   let at = 0;

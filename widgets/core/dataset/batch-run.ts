@@ -32,8 +32,13 @@ export interface BatchRunOptions {
   derivatives?: boolean;
 }
 
-/** The columns of a row: t, the state, H when known, then dx/dt when asked for, named d<name>/dt. */
-export function rowColumns(model: Model, derivatives: boolean): string[] {
+/**
+ * The columns of a row: t, the state, H when known, then dx/dt when asked
+ * for, named d<name>/dt. Only whether there is an H matters, so a caller that
+ * knows of a model without holding it (the CLI, whose model may run in
+ * another process) can ask too.
+ */
+export function rowColumns(model: Pick<Model, 'names'> & { readonly hamiltonian?: unknown }, derivatives: boolean): string[] {
   const columns = ['t', ...model.names];
   if (model.hamiltonian) columns.push('H');
   if (derivatives) columns.push(...model.names.map((n) => `d${n}/dt`));
