@@ -10,9 +10,14 @@
  * parses, whose generated code would otherwise fail to run. The cache is only
  * ever a shortcut: any problem reading or writing it means "compile", never
  * an error.
+ *
+ * A cache file is code the CLI runs with the user's rights, so only a file
+ * the user owns, and that no one else may write, is read: a cache folder
+ * shared on a cluster ($PHASEBOOK_CACHE_DIR), where others could plant a
+ * file under a model's name, then costs a compile, not the user's account.
  */
 import { createHash, randomBytes } from 'node:crypto';
-import { mkdirSync, readFileSync, renameSync, rmSync, writeFileSync } from 'node:fs';
+import { closeSync, fstatSync, mkdirSync, openSync, readFileSync, renameSync, rmSync, type Stats, writeFileSync } from 'node:fs';
 import { homedir } from 'node:os';
 import { isAbsolute, join } from 'node:path';
 import type { CompiledModel, CompiledModelStore } from '../core/index.ts';
@@ -36,12 +41,30 @@ export function modelCacheFile(directory: string, key: string): string {
   return join(directory, `${sha256(key).slice(0, 32)}.json`);
 }
 
+/** Whether a cache file's code may run: owned by this user, writable by no one else (POSIX; Windows has no such bits). */
+export function writtenByUserAlone(stat: Pick<Stats, 'uid' | 'mode'>, uid: number | undefined = process.getuid?.()): boolean {
+  if (uid === undefined) return true;
+  return stat.uid === uid && (stat.mode & 0o022) === 0;
+}
+
+/** A cache file's text, if it is one whose code may run. */
+function readTrusted(file: string): string | undefined {
+  const fd = openSync(file, 'r');
+  try {
+    // Checked on the descriptor, so the file judged is the file read.
+    return writtenByUserAlone(fstatSync(fd)) ? readFileSync(fd, 'utf8') : undefined;
+  } finally {
+    closeSync(fd);
+  }
+}
+
 /** A store of compiled models as files in `directory`, which is created on the first write. */
 export function diskModelStore(directory: string): CompiledModelStore {
   return {
     get(key: string): CompiledModel | undefined {
       try {
-        const text = readFileSync(modelCacheFile(directory, key), 'utf8');
+        const text = readTrusted(modelCacheFile(directory, key));
+        if (text === undefined) return undefined;
         const newline = text.indexOf('\n');
         const body = text.slice(newline + 1);
         if (newline !== 64 || sha256(body) !== text.slice(0, 64)) return undefined;
@@ -58,7 +81,8 @@ export function diskModelStore(directory: string): CompiledModelStore {
       try {
         mkdirSync(directory, { recursive: true });
         const body = JSON.stringify(model);
-        writeFileSync(temporary, `${sha256(body)}\n${body}`);
+        // Writable by the user alone whatever the umask, or the next run would not read it back.
+        writeFileSync(temporary, `${sha256(body)}\n${body}`, { mode: 0o644 });
         renameSync(temporary, file);
       } catch {
         try {

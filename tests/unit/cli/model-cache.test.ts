@@ -1,8 +1,8 @@
-import { mkdtempSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { chmodSync, mkdtempSync, readdirSync, readFileSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { beforeEach, describe, expect, it } from 'vitest';
-import { diskModelStore, modelCacheDirectory, modelCacheFile } from '../../../widgets/cli/model-cache.ts';
+import { diskModelStore, modelCacheDirectory, modelCacheFile, writtenByUserAlone } from '../../../widgets/cli/model-cache.ts';
 import { canonicalEquations } from '../../../widgets/core/canonical-equations.ts';
 import { modelKey } from '../../../widgets/core/compiled-model.ts';
 
@@ -50,6 +50,22 @@ describe('diskModelStore(directory)', () => {
     const text = readFileSync(file, 'utf8');
     writeFileSync(file, text.replace('"k"', '"K"'));
     expect(store.get(modelKey(spec))).toBeUndefined();
+  });
+
+  it('reads no file that another user wrote or could write: its code would run with the reader’s rights', async () => {
+    const store = diskModelStore(directory);
+    await canonicalEquations(spec, { store });
+    const file = modelCacheFile(directory, modelKey(spec));
+    expect(statSync(file).mode & 0o777).toBe(0o644);
+    expect(store.get(modelKey(spec))).toBeDefined();
+    for (const mode of [0o664, 0o646]) {
+      chmodSync(file, mode);
+      expect(store.get(modelKey(spec))).toBeUndefined();
+    }
+    chmodSync(file, 0o644);
+    expect(store.get(modelKey(spec))).toBeDefined();
+    expect(writtenByUserAlone({ uid: 1000, mode: 0o100644 }, 1000)).toBe(true);
+    expect(writtenByUserAlone({ uid: 1001, mode: 0o100644 }, 1000)).toBe(false);
   });
 
   it('drops a write it cannot make', async () => {
