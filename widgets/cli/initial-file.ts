@@ -1,7 +1,8 @@
 /**
  * `--initial-file FILE`: one initial state per trajectory, as
- * - CSV: a row per trajectory, with a header naming the state's components
- *   in any order, or no header and the components in the state's order;
+ * - CSV (RFC 4180, quoted fields too): a row per trajectory, with a header
+ *   naming the state's components in any order, or no header and the
+ *   components in the state's order;
  * - NPY: an array of shape (M, 2n), or (2n,) for one, of any float or int dtype;
  * - JSON: an array of rows, each an array in the state's order or an object
  *   by name.
@@ -11,6 +12,7 @@
 import { readFileSync } from 'node:fs';
 import { basename } from 'node:path';
 import { InputError } from '../core/index.ts';
+import { csvRecords } from './csv-records.ts';
 import { numericDtype, parseNpyHeader } from './formats/npy.ts';
 import { resolveName } from './ranges.ts';
 
@@ -108,10 +110,10 @@ function byName(keys: readonly string[], names: readonly string[], what: string)
 }
 
 function fromCsv(text: string, names: readonly string[], what: string): number[] {
-  const lines = text.split(/\r?\n/);
-  while (lines.length && lines[lines.length - 1].trim() === '') lines.pop();
-  if (lines.length === 0) throw new InputError(`${what} is empty`);
-  const first = lines[0].split(',').map((s) => s.trim());
+  const records = csvRecords(text, what);
+  while (records.length && records[records.length - 1].every((f) => f.trim() === '')) records.pop();
+  if (records.length === 0) throw new InputError(`${what} is empty`);
+  const first = records[0].map((s) => s.trim());
   const headed = first.some((f) => f === '' || !Number.isFinite(Number(f)) || /^[A-Za-z_]/.test(f));
   const dim = names.length;
   let order = names.map((_, c) => c);
@@ -123,8 +125,8 @@ function fromCsv(text: string, names: readonly string[], what: string): number[]
     order = keys.map((key) => first.indexOf(key));
   }
   const out: number[] = [];
-  for (let i = headed ? 1 : 0; i < lines.length; i++) {
-    const fields = lines[i].split(',');
+  for (let i = headed ? 1 : 0; i < records.length; i++) {
+    const fields = records[i];
     if (fields.length !== dim) throw new InputError(`${what}: line ${i + 1} has ${fields.length} values; the state ${names.join(', ')} needs ${dim}`);
     for (let c = 0; c < dim; c++) {
       const field = fields[order[c]].trim();

@@ -20,6 +20,7 @@ import { TextDatasetWriter } from './formats/text-dataset.ts';
 import { Interrupted, InterruptGuard } from './interrupt.ts';
 import { fileSink, type Sink } from './output.ts';
 import { shardRange } from './run-spec.ts';
+import { refuseSameFile } from './same-file.ts';
 
 export const MERGE_USAGE = 'phasebook merge --output FILE SHARD…';
 
@@ -86,6 +87,8 @@ function writerFor(file: DatasetFile, sink: Sink, shape: DatasetShape, meta: Dat
 
 export async function mergeCommand(argv: readonly string[]): Promise<string> {
   const { output, inputs } = mergeArguments(argv);
+  // Renamed onto a shard, the merged file would replace one of the parts it is made from.
+  for (const input of inputs) refuseSameFile(output, input, '--output', 'shard');
   const files: DatasetFile[] = [];
   try {
     for (const input of inputs) files.push(await openDataset(input));

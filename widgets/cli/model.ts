@@ -42,9 +42,24 @@ export type ModelRecipe =
 export const FIELD_SHAPE = '(t, x, dxdt) => { dxdt[0] = …; … }';
 export const H_SHAPE = '(t, x) => …';
 
+/**
+ * The longest H or vector field taken, in characters: sixteen times the
+ * 200-degree-of-freedom chains of the book. A longer one is a mistake or a
+ * file made to hurt, and compiling it would take long before failing.
+ */
+export const MAX_SOURCE_CHARS = 65_536;
+
+function checkLength(source: string | undefined, what: string): void {
+  if (source !== undefined && source.length > MAX_SOURCE_CHARS) {
+    throw new InputError(`${what} is ${source.length} characters long; phasebook takes at most ${MAX_SOURCE_CHARS} (64 KiB)`);
+  }
+}
+
 /** The recipe of the model `args` describe: compiles H (or takes it from the cache) when there is one to compile. */
 export async function modelRecipe(args: ModelArguments): Promise<ModelRecipe> {
   const { dof, params, coordinates, momenta, method } = args;
+  checkLength(args.hamiltonian, 'H');
+  checkLength(args.vectorField, 'the vector field');
   if (args.vectorField === undefined) {
     if (args.hamiltonian === undefined) throw new InputError('give --hamiltonian H, or --vector-field with a JS function (t, x, dxdt) => { … }');
     const store = args.cache ? diskModelStore(modelCacheDirectory()) : undefined;

@@ -10,6 +10,7 @@ import { executeRun, prepareRun, type PreparedRun } from './dataset-run.ts';
 import { datasetWriter } from './dataset-writer.ts';
 import { readInitialFile } from './initial-file.ts';
 import { modelRecipe, userCodeOf } from './model.ts';
+import { refuseSameFile } from './same-file.ts';
 import { Interrupted, InterruptGuard } from './interrupt.ts';
 import { fileSink, stdoutSink, type Sink } from './output.ts';
 import { parameters } from './parameters.ts';
@@ -32,6 +33,8 @@ const FORMATS: readonly Format[] = ['csv', 'json', 'npz', 'parquet'];
 export interface SimulateArguments {
   spec: RunSpec;
   output?: string;
+  /** --initial-file, which the output must not replace */
+  initialFile?: string;
   /** threads; undefined: every core for a run large enough to repay them */
   workers?: number;
   cache: boolean;
@@ -157,7 +160,7 @@ export function parseSimulate(argv: readonly string[]): SimulateArguments {
     layout,
     shard,
   };
-  return { spec, output, workers, cache: !args.flags.has('no-cache'), force: args.flags.has('force') };
+  return { spec, output, initialFile: value('initial-file'), workers, cache: !args.flags.has('no-cache'), force: args.flags.has('force') };
 }
 
 /** The set of initial states, from whichever one of --initial, --initial-file, --sample and --grid is given. */
@@ -202,6 +205,8 @@ export async function simulate(argv: readonly string[]): Promise<void> {
   if (output === undefined && (spec.format === 'npz' || spec.format === 'parquet') && process.stdout.isTTY) {
     throw new InputError(`--format ${spec.format} is binary: give --output FILE, or send stdout to a file or a pipe`);
   }
+  // Renamed onto its input, the output would replace the states it is computed from.
+  if (output !== undefined && parsed.initialFile !== undefined) refuseSameFile(output, parsed.initialFile, '--output', '--initial-file');
   const guard = new InterruptGuard();
   // The output is checked, and its partial file made, before anything is compiled or computed.
   const sink: Sink = output ? fileSink(output, guard) : stdoutSink();
