@@ -42,10 +42,12 @@ const MESSAGE_CHARS = 400;
 
 /**
  * Text from the sandbox as one printable line: C0 and C1 control characters
- * (ESC, CR, BEL…) and line breaks become spaces, and a long text is cut.
+ * (ESC, CR, BEL…), line breaks and the marks that reorder text on screen
+ * (bidirectional overrides and isolates) become spaces, and a long text is
+ * cut.
  */
 export function printable(text: string, limit = MESSAGE_CHARS): string {
-  const line = text.replace(/[\u0000-\u001f\u007f-\u009f\u2028\u2029]+/g, ' ').trim();
+  const line = text.replace(/[\u0000-\u001f\u007f-\u009f\u200e\u200f\u2028-\u202e\u2066-\u2069]+/g, ' ').trim();
   return line.length > limit ? `${line.slice(0, limit)}…` : line;
 }
 

@@ -51,8 +51,12 @@ async function sandboxScript(): Promise<string> {
   if (/\.js$/.test(here)) return fileURLToPath(new URL('./sandbox-child.js', here));
   // A path esbuild cannot follow: the build recipe is never bundled into the CLI.
   const builder = new URL('../../bin/cli-bundle.mjs', here).href;
-  const { ensureCli } = (await import(builder)) as { ensureCli(): Promise<string> };
-  return join(dirname(await ensureCli()), 'sandbox-child.js');
+  try {
+    const { ensureCli } = (await import(builder)) as { ensureCli(): Promise<string> };
+    return join(dirname(await ensureCli()), 'sandbox-child.js');
+  } catch (error) {
+    throw new Error(`the sandbox runs the compiled CLI, which could not be built (npm run build:cli says why): ${(error as Error)?.message ?? error}`);
+  }
 }
 
 export class Sandbox {

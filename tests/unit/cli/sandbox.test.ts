@@ -227,6 +227,8 @@ describe('the sandbox’s replies, read as a stranger’s', () => {
     // The escape character goes, and with it the sequence's power; what is left is plain text.
     expect(error?.kind === 'error' && error.error.message).toBe('[2Jcleared and more');
     expect(printable('x'.repeat(1000)).length).toBeLessThan(410);
+    // Marks that reorder text on screen, as "Trojan source" uses them, go too.
+    expect(printable('H fails\u202e txt.exe\u2066')).toBe('H fails  txt.exe');
   });
 });
 
