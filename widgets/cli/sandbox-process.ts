@@ -35,6 +35,23 @@ export type UserCode = 'H' | 'the vector field';
 /** The end of the child's stderr kept, to tell why it died (V8's out-of-memory report is a few lines). */
 const STDERR_TAIL = 4096;
 
+/**
+ * Sandboxes not yet gone, killed if the CLI exits without closing them
+ * (stdout closed under it by `| head` ends it with process.exit): code in an
+ * endless loop would never notice that its CLI is gone.
+ */
+const running = new Set<ChildProcess>();
+let killedOnExit = false;
+function killOnExit(child: ChildProcess): void {
+  running.add(child);
+  child.once('exit', () => running.delete(child));
+  if (killedOnExit) return;
+  killedOnExit = true;
+  process.once('exit', () => {
+    for (const sandbox of running) sandbox.kill('SIGKILL');
+  });
+}
+
 type Waiter =
   | { expect: 'done'; resolve: () => void; reject: (error: Error) => void }
   | { expect: 'result'; task: Task; width: number; resolve: (result: TaskResult) => void; reject: (error: Error) => void };
@@ -107,6 +124,7 @@ export class Sandbox {
       cwd: parse(real).root,
       windowsHide: true,
     });
+    killOnExit(this.child);
     this.child.stderr!.setEncoding('utf8');
     this.child.stderr!.on('data', (chunk: string) => {
       this.stderr = (this.stderr + chunk).slice(-STDERR_TAIL);
