@@ -130,11 +130,15 @@ export class Sandbox {
       this.stderr = (this.stderr + chunk).slice(-STDERR_TAIL);
     });
     this.child.on('message', (message) => this.receive(message));
-    this.child.on('error', (error) => this.fail(new Error(`the sandbox for ${this.whose()} could not be started: ${error.message}`)));
     this.exited = new Promise((resolve) => {
       this.child.on('exit', (code, signal) => {
         if (!this.closing) this.fail(this.death(code, signal));
         resolve();
+      });
+      this.child.on('error', (error) => {
+        this.fail(new Error(`the sandbox for ${this.whose()} failed: ${error.message}`));
+        // A process that never started never exits either.
+        if (this.child.pid === undefined) resolve();
       });
     });
   }
