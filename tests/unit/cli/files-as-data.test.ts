@@ -183,6 +183,23 @@ describe('damaged files, said with their names', () => {
     expect(partials()).toEqual([]);
   }, 30_000);
 
+  it.each(['merge', 'reproduce'])('%s refuses an NPZ with one bit of x flipped, by its CRC: one line naming the file, status 2, no output', async (command) => {
+    for (const i of [1, 2]) await simulate(['--hamiltonian', 'p^2/2 + q^2/2', ...SET, '--shard', `${i}/2`, '--output', join(scratch, `s${i}.npz`)]);
+    const shard = join(scratch, 's2.npz');
+    const bytes = readFileSync(shard);
+    // x.npy's local header is 30 bytes, its name 5, no extra field (a small file), then the 128-byte NPY header: the 40th byte of q₀.
+    const data = bytes.indexOf('x.npy') + 5 + 128;
+    bytes[data + 40] ^= 0x01;
+    writeFileSync(shard, bytes);
+    const out = join(scratch, 'merged.npz');
+    const exit = await phasebook(command === 'merge' ? ['merge', '--output', out, join(scratch, 's1.npz'), shard] : ['reproduce', shard]);
+    expect(exit.code).toBe(2);
+    oneLine(exit);
+    expect(exit.stderr).toMatch(new RegExp(`^phasebook: ${shard.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')} is not a ZIP archive \\(NPZ\\) that can be read: x\\.npy is damaged: its bytes' CRC-32 is `));
+    expect(existsSync(out)).toBe(false);
+    expect(partials()).toEqual([]);
+  }, 30_000);
+
   it.each(['merge', 'reproduce'])('%s says a damaged Parquet file is damaged, naming it, instead of an internal error', async (command) => {
     for (const i of [1, 2]) await simulate(['--hamiltonian', 'p^2/2 + q^2/2', ...SET, '--shard', `${i}/2`, '--output', join(scratch, `s${i}.parquet`)]);
     const shard = join(scratch, 's1.parquet');

@@ -48,7 +48,3 @@ export interface DatasetWriter {
   abandon(): void;
 }
 
-/** The index of a column by name: the state's i-th name is column 1 + i. */
-export function widthOf(shape: DatasetShape): number {
-  return shape.columns.length;
-}

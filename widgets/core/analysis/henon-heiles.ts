@@ -74,6 +74,3 @@ export const harmonicOscillator: PlanarSystem = {
     J[13] = -1;
   },
 };
-
-/** The escape energy of Hénon–Heiles: above it an orbit may leave through a saddle. */
-export const HENON_HEILES_ESCAPE = 1 / 6;
