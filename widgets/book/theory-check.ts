@@ -44,8 +44,8 @@ export interface TheoryCheckOptions {
   digits?: number;
 }
 
-/** A number for the reader: never "NaN" or "Infinity" (the verdict says why a value is missing). */
-export function formatNumber(x: number, digits: number): string {
+/** A number in a theory check's verdict: never "NaN" or "Infinity" (the verdict says why a value is missing). */
+export function verdictNumber(x: number, digits: number): string {
   if (!Number.isFinite(x)) return '—';
   if (x === 0) return '0';
   if (x !== 0 && (Math.abs(x) < 1e-3 || Math.abs(x) >= 1e6)) return x.toExponential(Math.max(0, digits - 1));
@@ -107,7 +107,7 @@ export function theoryCheck(options: TheoryCheckOptions): HTMLElement {
 
   const u = unit ? ` ${unit}` : '';
   // Two digits for errors: they are estimates, and more would claim a precision they do not have.
-  const size = (x: number) => (relative ? `${formatNumber(x * 100, 2)} %` : `${formatNumber(x, 2)}${u}`);
+  const size = (x: number) => (relative ? `${verdictNumber(x * 100, 2)} %` : `${verdictNumber(x, 2)}${u}`);
 
   const caption = element('figcaption', '');
   const mark = element('span', 'pb-check-mark', MARKS[verdict]);
@@ -116,7 +116,7 @@ export function theoryCheck(options: TheoryCheckOptions): HTMLElement {
 
   const list = element('dl', '');
   const row = (name: string, className: string, text: string) => list.append(element('dt', '', name), element('dd', className, text));
-  const value = (x: number, about?: string) => `${formatNumber(x, digits)}${Number.isFinite(x) ? u : ''}${about ? ` (${about})` : ''}`;
+  const value = (x: number, about?: string) => `${verdictNumber(x, digits)}${Number.isFinite(x) ? u : ''}${about ? ` (${about})` : ''}`;
   row('Simulation', 'pb-measured', value(measured, method));
   row('Theory', 'pb-predicted', value(predicted, formula));
   root.append(caption, list);

@@ -28,7 +28,7 @@ const DIGITS = 12;
 /** Items of a long top-level list shown when the reader opens it. */
 const MAX_OPEN_ITEMS = 2000;
 
-function formatNumber(value: number): string {
+function inspectedNumber(value: number): string {
   if (Object.is(value, -0)) return '-0';
   if (!Number.isFinite(value) || Number.isInteger(value)) return String(value);
   return String(Number(value.toPrecision(DIGITS)));
@@ -112,7 +112,7 @@ function describeObject(value: object, depth: number): Part[] {
 
 function describe(value: unknown, depth: number): Part[] {
   switch (typeof value) {
-    case 'number': return [token('number', formatNumber(value))];
+    case 'number': return [token('number', inspectedNumber(value))];
     case 'bigint': return [token('number', `${value}n`)];
     case 'string': return [token('string', formatString(value, depth))];
     case 'boolean': return [token('boolean', String(value))];

@@ -8,8 +8,12 @@ const SUPERSCRIPT: Record<string, string> = {
   '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹', '-': '⁻',
 };
 
-/** x with `digits` significant digits: plain when 1e-3 ≤ |x| < 1e6, else m × 10ⁿ. */
-export function formatNumber(x: number, digits = 6): string {
+/**
+ * A number for reading on the page (the readouts, the plots' tables and text
+ * alternatives, notes): x with `digits` significant digits, plain when
+ * 1e-3 ≤ |x| < 1e6, else m × 10ⁿ.
+ */
+export function readoutNumber(x: number, digits = 6): string {
   if (Number.isNaN(x)) return 'NaN';
   if (!Number.isFinite(x)) return x > 0 ? '∞' : '−∞';
   if (x === 0) return '0';
@@ -28,7 +32,7 @@ export function formatTime(t: number, dt: number): string {
 /** A relative drift, always in scientific form with 2 digits: 3.1 × 10⁻¹². */
 export function formatDrift(d: number): string {
   if (d === 0) return '0';
-  if (!Number.isFinite(d)) return formatNumber(d);
+  if (!Number.isFinite(d)) return readoutNumber(d);
   const [mantissa, exponent] = d.toExponential(1).split('e');
   return `${mantissa} × 10${superscript(String(Number(exponent)))}`;
 }

@@ -1,7 +1,7 @@
 import type { Simulation } from '../core/index.ts';
 import { h } from './dom.ts';
 import { DriftTracker } from './drift.ts';
-import { formatDrift, formatNumber, formatTime } from './format.ts';
+import { formatDrift, formatTime, readoutNumber } from './format.ts';
 
 /** Readouts refresh at most this often, ms: faster numbers cannot be read and cost layout. */
 const INTERVAL_MS = 100;
@@ -58,7 +58,7 @@ export class Readouts {
     this.t.textContent = formatTime(simulation.t, simulation.dt);
     const energy = this.tracker?.latest(simulation.record);
     if (!energy) return;
-    this.h.textContent = formatNumber(energy.h, 8);
+    this.h.textContent = readoutNumber(energy.h, 8);
     this.drift.textContent = formatDrift(simulation.count > 1 ? energy.worst : energy.drift);
   }
 }

@@ -15,8 +15,11 @@ import { columnProblem, type Table } from './table.ts';
  * ever quoted and the reader can stay a plain split.
  */
 
-/** One number as written in a CSV field. */
-export function formatNumber(x: number): string {
+/**
+ * A number for a file that must read back as the same double: JS's shortest
+ * round trip, with -0 kept. Every exporter writes its numbers through it.
+ */
+export function roundTripNumber(x: number): string {
   return x === 0 && 1 / x < 0 ? '-0' : String(x);
 }
 
@@ -45,8 +48,8 @@ export function csvRows(data: ArrayLike<number>, width: number, from: number, to
   let out = '';
   for (let i = from; i < to; i++) {
     const at = i * width;
-    let line = formatNumber(data[at]);
-    for (let j = 1; j < width; j++) line += ',' + formatNumber(data[at + j]);
+    let line = roundTripNumber(data[at]);
+    for (let j = 1; j < width; j++) line += ',' + roundTripNumber(data[at + j]);
     out += line + '\n';
   }
   return out;

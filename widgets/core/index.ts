@@ -62,7 +62,7 @@ export { type BuildOptions, canonicalEquations, compiledModelFor, type Hamiltoni
 export { bytesFor, capacityFor } from './capacity.ts';
 export { compileModel } from './compile-model.ts';
 export { type CompiledModel, type CompiledModelStore, type ModelKeySpec } from './compiled-model.ts';
-export { csvHeader, csvRows, formatNumber, parseCSV, toCSV } from './csv.ts';
+export { csvHeader, csvRows, parseCSV, roundTripNumber, toCSV } from './csv.ts';
 export { BatchRun, rowColumns } from './dataset/batch-run.ts';
 export { type Axis, type Range } from './dataset/box.ts';
 export { fillInitial, type InitialSet, trajectoryCount } from './dataset/initial-set.ts';

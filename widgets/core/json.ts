@@ -1,4 +1,4 @@
-import { formatNumber } from './csv.ts';
+import { roundTripNumber } from './csv.ts';
 import type { ExportMeta } from './export-meta.ts';
 import { columnProblem, type Table } from './table.ts';
 
@@ -18,7 +18,7 @@ import { columnProblem, type Table } from './table.ts';
 
 /** One data value as written in a JSON export. */
 export function jsonNumber(x: number): string {
-  return Number.isFinite(x) ? formatNumber(x) : `"${x}"`;
+  return Number.isFinite(x) ? roundTripNumber(x) : `"${x}"`;
 }
 
 /** Everything up to and including the opening bracket of `data`. */

@@ -1,5 +1,5 @@
 import type { TrajectoryRecord } from '../core/index.ts';
-import { formatNumber } from '../controls/format.ts';
+import { readoutNumber } from '../controls/format.ts';
 
 /**
  * What a plot shows, as text: the rows of its data-table view and the
@@ -19,7 +19,7 @@ export const TABLE_SERIES = 8;
 
 /** A number as the tables and text alternatives write it: four significant digits, a true minus. */
 export function show(v: number): string {
-  return formatNumber(v, 4);
+  return readoutNumber(v, 4);
 }
 
 /**

@@ -1,6 +1,6 @@
 import type { Simulation } from '../core/index.ts';
 import { h } from '../controls/dom.ts';
-import { formatNumber } from '../controls/format.ts';
+import { readoutNumber } from '../controls/format.ts';
 
 /**
  * The two messages a simulator can show inside itself: the blow-up that
@@ -32,7 +32,7 @@ export class Notices {
     if (!capped) return;
     const text =
       `The record is full: it keeps the latest ${record.capacity.toLocaleString('en')} samples ` +
-      `(from t = ${formatNumber(record.time(0), 6)}) and has dropped ${record.dropped.toLocaleString('en')} older ones; ` +
+      `(from t = ${readoutNumber(record.time(0), 6)}) and has dropped ${record.dropped.toLocaleString('en')} older ones; ` +
       'scrolling back and downloads start there.';
     if (this.note.textContent !== text) this.note.textContent = text;
   }

@@ -6,7 +6,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { allowedTerms, judge, SMALL } from '../../../widgets/book/check-verdict.ts';
-import { formatNumber } from '../../../widgets/book/theory-check.ts';
+import { verdictNumber } from '../../../widgets/book/theory-check.ts';
 
 const errors = {
   formula: { value: 0.03, why: 'the b³ term' },
@@ -118,13 +118,13 @@ describe('allowedTerms: the error model is stated, and its terms are sizes', () 
   });
 });
 
-describe('formatNumber: never NaN on the page', () => {
+describe('verdictNumber: never NaN on the page', () => {
   it('writes a dash for values that are not numbers, and keeps the digits asked for', () => {
-    expect(formatNumber(NaN, 3)).toBe('—');
-    expect(formatNumber(Infinity, 3)).toBe('—');
-    expect(formatNumber(0.25, 2)).toBe('0.25');
-    expect(formatNumber(0, 2)).toBe('0');
-    expect(formatNumber(6.6e-5, 2)).toBe('6.6e-5');
-    expect(formatNumber(2.5e6, 3)).toBe('2.50e+6');
+    expect(verdictNumber(NaN, 3)).toBe('—');
+    expect(verdictNumber(Infinity, 3)).toBe('—');
+    expect(verdictNumber(0.25, 2)).toBe('0.25');
+    expect(verdictNumber(0, 2)).toBe('0');
+    expect(verdictNumber(6.6e-5, 2)).toBe('6.6e-5');
+    expect(verdictNumber(2.5e6, 3)).toBe('2.50e+6');
   });
 });

@@ -3,7 +3,7 @@ import { canonicalEquations } from '../../../widgets/core/canonical-equations.ts
 import { Simulation } from '../../../widgets/core/simulation.ts';
 import { DriftTracker, energyColumns } from '../../../widgets/controls/drift.ts';
 import { recordLayout, relativeChange } from '../../../widgets/core/index.ts';
-import { formatDrift, formatNumber, formatRate, formatSpeed, formatTime } from '../../../widgets/controls/format.ts';
+import { formatDrift, formatRate, formatSpeed, formatTime, readoutNumber } from '../../../widgets/controls/format.ts';
 import { parseBound, parseDt, parseNumber } from '../../../widgets/controls/field-values.ts';
 import { SPEEDS, speedsWith } from '../../../widgets/controls/transport.ts';
 
@@ -32,12 +32,12 @@ describe('controls/parse', () => {
 });
 
 describe('controls/format', () => {
-  it('formatNumber(x, digits) keeps a fixed number of significant digits', () => {
-    expect(formatNumber(200)).toBe('200.000');
-    expect(formatNumber(-0.5, 3)).toBe('−0.500');
-    expect(formatNumber(4.9631741e14, 8)).toBe('4.9631741 × 10¹⁴');
-    expect(formatNumber(-2e-7, 2)).toBe('−2.0 × 10⁻⁷');
-    expect([NaN, Infinity, -Infinity, 0].map((x) => formatNumber(x))).toEqual(['NaN', '∞', '−∞', '0']);
+  it('readoutNumber(x, digits) keeps a fixed number of significant digits', () => {
+    expect(readoutNumber(200)).toBe('200.000');
+    expect(readoutNumber(-0.5, 3)).toBe('−0.500');
+    expect(readoutNumber(4.9631741e14, 8)).toBe('4.9631741 × 10¹⁴');
+    expect(readoutNumber(-2e-7, 2)).toBe('−2.0 × 10⁻⁷');
+    expect([NaN, Infinity, -Infinity, 0].map((x) => readoutNumber(x))).toEqual(['NaN', '∞', '−∞', '0']);
   });
 
   it('formatTime(t, dt) shows as many decimals as dt has', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { csvHeader, csvRows, formatNumber, parseCSV, toCSV } from '../../../widgets/core/csv.ts';
+import { csvHeader, csvRows, parseCSV, roundTripNumber, toCSV } from '../../../widgets/core/csv.ts';
 import { jsonHead, jsonRows, jsonTail, parseJSON, toJSON, type ExportMeta } from '../../../widgets/core/index.ts';
 import { ParseError } from '../../../widgets/core/parse-error.ts';
 import { readTable } from '../../../widgets/core/read-table.ts';
@@ -70,14 +70,14 @@ const COLS = ['t', 'q0', 'q1', 'p0', 'p1', 'H'];
 const ALL = [...hardValues(), ...randomDoubles(6000, 3), NaN, Infinity, -Infinity];
 const TABLE = tableOf(COLS, ALL);
 
-describe('formatNumber(x)', () => {
-  it('formatNumber(x) keeps the sign of zero and writes non-finite values as words', () => {
-    expect(formatNumber(-0)).toBe('-0');
-    expect(formatNumber(0)).toBe('0');
-    expect(formatNumber(NaN)).toBe('NaN');
-    expect(formatNumber(-Infinity)).toBe('-Infinity');
-    expect(formatNumber(5e-324)).toBe('5e-324');
-    expect(formatNumber(0.1 + 0.2)).toBe('0.30000000000000004');
+describe('roundTripNumber(x)', () => {
+  it('roundTripNumber(x) keeps the sign of zero and writes non-finite values as words', () => {
+    expect(roundTripNumber(-0)).toBe('-0');
+    expect(roundTripNumber(0)).toBe('0');
+    expect(roundTripNumber(NaN)).toBe('NaN');
+    expect(roundTripNumber(-Infinity)).toBe('-Infinity');
+    expect(roundTripNumber(5e-324)).toBe('5e-324');
+    expect(roundTripNumber(0.1 + 0.2)).toBe('0.30000000000000004');
   });
 });
 

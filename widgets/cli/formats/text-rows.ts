@@ -9,7 +9,7 @@
  * line is ever built, so the garbage stays young and cheap, and the bytes
  * can be handed from a worker without a copy.
  */
-import { formatNumber, jsonNumber } from '../../core/index.ts';
+import { jsonNumber, roundTripNumber } from '../../core/index.ts';
 import type { Block } from './dataset-shape.ts';
 
 export type TextFormat = 'csv' | 'json';
@@ -35,7 +35,7 @@ export function formatRows(format: TextFormat, block: Block, width: number, numb
   const capacity = textCapacity(block, width);
   const out = into && into.length >= capacity ? into : new Uint8Array(capacity);
   const buffer = Buffer.from(out.buffer, out.byteOffset, out.length);
-  const number = format === 'csv' ? formatNumber : jsonNumber;
+  const number = format === 'csv' ? roundTripNumber : jsonNumber;
   const open = format === 'csv' ? '' : ',\n[';
   const close = format === 'csv' ? '\n' : ']';
   let at = 0;
