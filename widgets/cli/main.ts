@@ -2,17 +2,18 @@ import { BlowUpError, InputError, VERSION } from '../core/index.ts';
 import { Interrupted } from './interrupt.ts';
 import { OutputError } from './output-error.ts';
 import { byteSize, count, OUTPUT_LIMIT, STEP_LIMIT } from './run-size.ts';
-import { SIMULATE_USAGE, simulate } from './simulate.ts';
-import { SPECTRUM_USAGE, spectrumCommand } from './spectrum-command.ts';
-import { MERGE_USAGE, mergeCommand } from './merge.ts';
-import { REPRODUCE_USAGE, reproduceCommand } from './reproduce.ts';
+import { COMMANDS } from './commands.ts';
+import { simulate } from './simulate.ts';
+import { spectrumCommand } from './spectrum-command.ts';
+import { mergeCommand } from './merge.ts';
+import { reproduceCommand } from './reproduce.ts';
+import { commandHelp, synopsis } from './usage.ts';
 
 const USAGE = `phasebook ${VERSION}: simulate Hamiltonian systems and analyse their spectra
 
-  ${SIMULATE_USAGE}
-  ${SPECTRUM_USAGE}
-  ${MERGE_USAGE}
-  ${REPRODUCE_USAGE}
+${COMMANDS.flatMap(synopsis).map((line) => `  ${line}`).join('\n')}
+
+phasebook COMMAND --help says what each option of COMMAND does.
 
 H is a math expression (p^2/2 + omega0^2*q^2/2 + alpha*q^3) or a JS arrow
 function ((t, x) => x[1]**2/2 + x[0]**2/2); --param values are visible to both.
@@ -47,6 +48,11 @@ SIGTERM removes the partial file and exits with status 130 or 143.
  */
 export async function main(argv: readonly string[]): Promise<number> {
   const [command, ...rest] = argv;
+  const declared = COMMANDS.find((c) => c.name === command);
+  if (declared && rest.includes('--help')) {
+    process.stdout.write(commandHelp(declared));
+    return 0;
+  }
   try {
     switch (command) {
       case 'simulate':

@@ -9,6 +9,8 @@
  * stop simulate.
  */
 import { InputError } from '../core/index.ts';
+import { parseArgs } from './args.ts';
+import { MERGE } from './commands.ts';
 import { breather } from './breather.ts';
 import { BLOCK_VALUES } from './dataset-plan.ts';
 import { unshardedMeta, type DatasetMeta } from './dataset-meta.ts';
@@ -21,8 +23,7 @@ import { Interrupted, InterruptGuard } from './interrupt.ts';
 import { fileSink, type Sink } from './output.ts';
 import { shardRange } from './run-spec.ts';
 import { refuseSameFile } from './same-file.ts';
-
-export const MERGE_USAGE = 'phasebook merge --output FILE SHARD…';
+import { usageLine } from './usage.ts';
 
 /** The first key in which two metas differ, for the message. */
 function firstDifference(a: Record<string, unknown>, b: Record<string, unknown>): string {
@@ -32,21 +33,13 @@ function firstDifference(a: Record<string, unknown>, b: Record<string, unknown>)
   return 'the order of its keys';
 }
 
+/** --output and the shards, each given. */
 export function mergeArguments(argv: readonly string[]): { output: string; inputs: string[] } {
-  let output: string | undefined;
-  const inputs: string[] = [];
-  for (let i = 0; i < argv.length; i++) {
-    const arg = argv[i];
-    if (arg === '--output' || arg.startsWith('--output=')) {
-      if (output !== undefined) throw new InputError('--output is given twice');
-      output = arg.includes('=') ? arg.slice(arg.indexOf('=') + 1) : argv[++i];
-      if (output === undefined) throw new InputError('--output needs a value');
-    } else if (arg.startsWith('--')) throw new InputError(`unknown option ${arg.split('=')[0]} (usage: ${MERGE_USAGE})`);
-    else inputs.push(arg);
-  }
-  if (output === undefined) throw new InputError(`--output is required (usage: ${MERGE_USAGE})`);
-  if (inputs.length === 0) throw new InputError(`give the shard files to merge (usage: ${MERGE_USAGE})`);
-  return { output, inputs };
+  const args = parseArgs(argv, MERGE);
+  const output = args.values.get('output');
+  if (output === undefined) throw new InputError(`--output is required (usage: ${usageLine(MERGE)})`);
+  if (args.operands.length === 0) throw new InputError(`give the shard files to merge (usage: ${usageLine(MERGE)})`);
+  return { output, inputs: args.operands };
 }
 
 /** The shards in order, checked to be all of one run's. */

@@ -23,10 +23,10 @@ import { modelRecipe } from './model.ts';
 import type { Sink } from './output.ts';
 import { SpillFile } from './spill-file.ts';
 import { parseArgs, wholeNumber } from './args.ts';
+import { REPRODUCE } from './commands.ts';
+import { usageLine } from './usage.ts';
 import { admitFileCode } from './trust-code.ts';
 import { InputError } from '../core/index.ts';
-
-export const REPRODUCE_USAGE = 'phasebook reproduce FILE [--workers K] [--no-cache] [--trust-code]';
 
 /** Every number of a file's blocks, in order, with where it is. */
 async function* numbers(file: DatasetFile): AsyncGenerator<{ value: number; trajectory: number; row: number; column: number }> {
@@ -43,9 +43,9 @@ async function* numbers(file: DatasetFile): AsyncGenerator<{ value: number; traj
 }
 
 export async function reproduceCommand(argv: readonly string[]): Promise<{ text: string; status: number }> {
-  const [path, ...rest] = argv;
-  if (path === undefined || path.startsWith('--')) throw new InputError(`give the file to reproduce (usage: ${REPRODUCE_USAGE})`);
-  const args = parseArgs(rest, { workers: 'value', 'no-cache': 'flag', 'trust-code': 'flag' });
+  const args = parseArgs(argv, REPRODUCE);
+  const [path] = args.operands;
+  if (path === undefined) throw new InputError(`give the file to reproduce (usage: ${usageLine(REPRODUCE)})`);
   const workers = args.values.has('workers') ? wholeNumber(args.values.get('workers')!, '--workers') : undefined;
   const guard = new InterruptGuard();
   guard.hold();

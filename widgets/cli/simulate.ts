@@ -5,7 +5,8 @@
  */
 import { basename, extname } from 'node:path';
 import { DEFAULT_DT, InputError, MAX_SEED, methodChoice, stateNames } from '../core/index.ts';
-import { number, numberList, parseArgs, positive, wholeNumber } from './args.ts';
+import { number, numberList, parseArgs, positive, wholeNumber, type ParsedArgs } from './args.ts';
+import { SIMULATE } from './commands.ts';
 import { executeRun, prepareRun, type PreparedRun } from './dataset-run.ts';
 import { datasetWriter } from './dataset-writer.ts';
 import { readInitialFile } from './initial-file.ts';
@@ -15,18 +16,9 @@ import { Interrupted, InterruptGuard } from './interrupt.ts';
 import { fileSink, stdoutSink, type Sink } from './output.ts';
 import { parameters } from './parameters.ts';
 import { parseBox, parseGrid } from './ranges.ts';
+import type { ParquetLayout } from './formats/parquet-dataset.ts';
 import type { Format, RunSpec, SetSpec } from './run-spec.ts';
-
-export const SIMULATE_USAGE = `phasebook simulate --hamiltonian H --dof N --initial v1,…,v2N [--param name=value]…
-                   [--dt 5e-4] [--t0 0] [--t-end 10] [--every 1 | --times t1,t2,…] [--derivatives]
-                   [--method rk38|verlet|yoshida4|midpoint|adaptive [--rtol 1e-9] [--atol 1e-12]]
-                   [--format csv|json|npz|parquet] [--layout long|wide] [--output FILE]
-                   [--coordinates x,y --momenta px,py] [--workers K] [--shard i/n] [--no-cache] [--force]
-    many trajectories instead of --initial:
-                   --initial-file FILE (.csv, .npy or .json, a row per trajectory)
-                   --sample N [--seed S] --box q=lo:hi,p=lo:hi [--energy E [--solve-for p]]
-                   --grid q=lo:hi:n,p=lo:hi:n
-  phasebook simulate --vector-field '(t, x, dxdt) => { … }' [--hamiltonian '(t, x) => …'] --dof N …`;
+import { usageLine } from './usage.ts';
 
 const FORMATS: readonly Format[] = ['csv', 'json', 'npz', 'parquet'];
 
@@ -62,45 +54,20 @@ function parseShard(text: string): { index: number; of: number } {
   return { index, of };
 }
 
-export function parseSimulate(argv: readonly string[]): SimulateArguments {
-  const args = parseArgs(argv, {
-    hamiltonian: 'value',
-    'vector-field': 'value',
-    dof: 'value',
-    initial: 'value',
-    'initial-file': 'value',
-    sample: 'value',
-    seed: 'value',
-    box: 'value',
-    energy: 'value',
-    'solve-for': 'value',
-    grid: 'value',
-    param: 'list',
-    coordinates: 'value',
-    momenta: 'value',
-    dt: 'value',
-    t0: 'value',
-    't-end': 'value',
-    every: 'value',
-    times: 'value',
-    derivatives: 'flag',
-    method: 'value',
-    rtol: 'value',
-    atol: 'value',
-    format: 'value',
-    layout: 'value',
-    output: 'value',
-    workers: 'value',
-    shard: 'value',
-    'no-cache': 'flag',
-    force: 'flag',
-  });
+/** The options as given: a value, or the error that names a missing one with the usage. */
+function reader(args: ParsedArgs) {
   const value = (name: string) => args.values.get(name);
   const required = (name: string) => {
     const v = value(name);
-    if (v === undefined) throw new InputError(`--${name} is required (usage: ${SIMULATE_USAGE.split('\n')[0]} …)`);
+    if (v === undefined) throw new InputError(`--${name} is required (usage: ${usageLine(SIMULATE)})`);
     return v;
   };
+  return { value, required };
+}
+
+/** H or the vector field, the state's names and the parameters. */
+function modelOptions(args: ParsedArgs) {
+  const { value, required } = reader(args);
   const hamiltonian = value('hamiltonian');
   const vectorField = value('vector-field');
   if (hamiltonian === undefined && vectorField === undefined) required('hamiltonian');
@@ -110,7 +77,12 @@ export function parseSimulate(argv: readonly string[]): SimulateArguments {
   const momenta = list('momenta');
   const { names } = stateNames(dof, coordinates, momenta);
   const { values: params, expressions } = parameters(args.lists.get('param') ?? [], names);
+  return { hamiltonian, vectorField, dof, coordinates, momenta, names, params, paramExpressions: Object.keys(expressions).length ? expressions : undefined };
+}
 
+/** The step, the span and the sample times, and the method. */
+function timeOptions(args: ParsedArgs) {
+  const { value } = reader(args);
   const dt = positive(value('dt') ?? String(DEFAULT_DT), '--dt');
   const t0 = number(value('t0') ?? '0', '--t0');
   const timesText = value('times');
@@ -127,40 +99,41 @@ export function parseSimulate(argv: readonly string[]): SimulateArguments {
     throw new InputError('--rtol and --atol are tolerances of --method adaptive');
   }
   const method = methodChoice(methodName, tolerance('rtol'), tolerance('atol'));
+  return { dt, t0, tEnd, every, times, method };
+}
 
+/** Where the output goes and in what form, and how the run is shared out. */
+function outputOptions(args: ParsedArgs) {
+  const { value } = reader(args);
   const output = value('output');
   const format = formatOf(value('format'), output);
   const layout = value('layout') ?? 'long';
   if (layout !== 'long' && layout !== 'wide') throw new InputError(`--layout must be long or wide, not "${layout}"`);
   if (value('layout') !== undefined && format !== 'parquet') throw new InputError('--layout applies to --format parquet only');
-
-  const set = setSpec(args.values, names, params);
   const shardText = value('shard');
   const shard = shardText === undefined ? undefined : parseShard(shardText);
   if (shard && format === 'csv') throw new InputError('--shard writes a part for phasebook merge, which checks the parts by the meta a CSV cannot hold: give --format npz, parquet or json');
   const workersText = value('workers');
   const workers = workersText === undefined ? undefined : wholeNumber(workersText, '--workers');
+  return { output, format, layout: layout as ParquetLayout, shard, workers };
+}
+
+/** The arguments of `phasebook simulate`, checked: the run's spec and how to carry it out. */
+export function parseSimulate(argv: readonly string[]): SimulateArguments {
+  const args = parseArgs(argv, SIMULATE);
+  const { names, ...model } = modelOptions(args);
+  const { method, ...time } = timeOptions(args);
+  const { output, workers, ...out } = outputOptions(args);
+  const set = setSpec(args.values, names, model.params);
   const spec: RunSpec = {
-    hamiltonian,
-    vectorField,
-    dof,
-    params,
-    paramExpressions: Object.keys(expressions).length ? expressions : undefined,
-    coordinates,
-    momenta,
-    dt,
+    ...model,
+    ...time,
     ...(method.name === 'rk38' ? {} : { method }),
-    t0,
-    tEnd,
-    every,
-    times,
+    ...out,
     set,
     derivatives: args.flags.has('derivatives'),
-    format,
-    layout,
-    shard,
   };
-  return { spec, output, initialFile: value('initial-file'), workers, cache: !args.flags.has('no-cache'), force: args.flags.has('force') };
+  return { spec, output, initialFile: args.values.get('initial-file'), workers, cache: !args.flags.has('no-cache'), force: args.flags.has('force') };
 }
 
 /** The set of initial states, from whichever one of --initial, --initial-file, --sample and --grid is given. */

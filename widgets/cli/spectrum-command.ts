@@ -1,24 +1,14 @@
 import { readFileSync } from 'node:fs';
 import { checkWindowName, findPeaks, InputError, readTable, spectrum } from '../core/index.ts';
 import { number, parseArgs, wholeNumber } from './args.ts';
-
-export const SPECTRUM_USAGE = `phasebook spectrum --input FILE --column NAME [--trajectory J] [--from T0] [--to T1]
-                   [--window hamming|none] [--top K] [--format text|json]`;
+import { SPECTRUM } from './commands.ts';
+import { usageLine } from './usage.ts';
 
 export function spectrumCommand(argv: readonly string[]): string {
-  const args = parseArgs(argv, {
-    input: 'value',
-    column: 'value',
-    from: 'value',
-    to: 'value',
-    window: 'value',
-    top: 'value',
-    format: 'value',
-    trajectory: 'value',
-  });
+  const args = parseArgs(argv, SPECTRUM);
   const input = args.values.get('input');
   const name = args.values.get('column');
-  if (!input) throw new InputError(`--input is required (usage: ${SPECTRUM_USAGE.split('\n')[0]} …)`);
+  if (!input) throw new InputError(`--input is required (usage: ${usageLine(SPECTRUM)})`);
   if (!name) throw new InputError('--column is required: name the series to analyse, e.g. --column q');
   const window = validWindow(args.values.get('window') ?? 'hamming');
   const top = wholeNumber(args.values.get('top') ?? '5', '--top');
