@@ -55,7 +55,7 @@ export const SPECTRUM: CommandSpec = {
   name: 'spectrum',
   summary: 'the strongest lines of one column’s spectrum, from a file simulate wrote',
   options: [
-    { name: 'input', kind: 'value', value: 'FILE', line: 'input', required: true, help: 'the samples: a CSV or JSON file (one trajectory, or a dataset of several)' },
+    { name: 'input', kind: 'value', value: 'FILE', line: 'input', required: true, help: 'a file phasebook wrote: CSV, JSON, NPZ or Parquet, of one trajectory or several' },
     { name: 'column', kind: 'value', value: 'NAME', line: 'input', required: true, help: 'the column to analyse, e.g. q' },
     { name: 'trajectory', kind: 'value', value: 'J', line: 'input', help: 'the trajectory to analyse, in a file of several' },
     { name: 'from', kind: 'value', value: 'T0', line: 'input', help: 'analyse the samples from this time on' },

@@ -7,12 +7,13 @@
  * - JSON: an array of rows, each an array in the state's order or an object
  *   by name.
  * The format is told by the name's extension (.csv, .npy, .json), or else
- * by the content. Every value must be a finite number.
+ * by the content. Every value must be a finite number. CSV and JSON are read
+ * by the core's readers (csv-read.ts, json-scan.ts), whose errors name the
+ * line, with the file's name before it.
  */
 import { readFileSync } from 'node:fs';
 import { basename } from 'node:path';
-import { InputError } from '../core/index.ts';
-import { csvRecords } from './csv-records.ts';
+import { csvNumber, csvRecords, InputError, ParseError, parseJsonValue, type CsvRecord } from '../core/index.ts';
 import { numericDtype, parseNpyHeader } from './formats/npy.ts';
 import { resolveName } from './ranges.ts';
 
@@ -72,12 +73,7 @@ function finite(value: unknown, what: string, row: number, name: string): number
 }
 
 function fromJson(text: string, names: readonly string[], what: string): number[] {
-  let data: unknown;
-  try {
-    data = JSON.parse(text);
-  } catch (error) {
-    throw new InputError(`${what} is not valid JSON: ${(error as Error).message}`);
-  }
+  const data = inFile(what, () => parseJsonValue(text));
   if (!Array.isArray(data)) throw new InputError(`${what} must hold an array of initial states (one per trajectory)`);
   // A single state written as one array of numbers.
   const rows = data.length > 0 && data.every((v) => typeof v === 'number') ? [data] : data;
@@ -95,6 +91,15 @@ function fromJson(text: string, names: readonly string[], what: string): number[
   return out;
 }
 
+/** What `read` returns, or its ParseError said of the file `what`. */
+function inFile<T>(what: string, read: () => T): T {
+  try {
+    return read();
+  } catch (error) {
+    throw error instanceof ParseError && error.source === undefined ? error.withSource(what) : error;
+  }
+}
+
 /** The key for each state name, from the keys given; any other key, or one missing, is an error. */
 function byName(keys: readonly string[], names: readonly string[], what: string): string[] {
   const found = new Map<string, string>();
@@ -110,11 +115,11 @@ function byName(keys: readonly string[], names: readonly string[], what: string)
 }
 
 function fromCsv(text: string, names: readonly string[], what: string): number[] {
-  const records = csvRecords(text, what);
-  while (records.length && records[records.length - 1].every((f) => f.trim() === '')) records.pop();
+  const records: CsvRecord[] = inFile(what, () => Array.from(csvRecords(text)));
   if (records.length === 0) throw new InputError(`${what} is empty`);
-  const first = records[0].map((s) => s.trim());
-  const headed = first.some((f) => f === '' || !Number.isFinite(Number(f)) || /^[A-Za-z_]/.test(f));
+  const first = records[0].fields.map((s) => s.trim());
+  // A first record that is not all finite numbers names the columns.
+  const headed = first.some((f) => !Number.isFinite(csvNumber(f) ?? NaN));
   const dim = names.length;
   let order = names.map((_, c) => c);
   if (headed) {
@@ -125,13 +130,12 @@ function fromCsv(text: string, names: readonly string[], what: string): number[]
     order = keys.map((key) => first.indexOf(key));
   }
   const out: number[] = [];
-  for (let i = headed ? 1 : 0; i < records.length; i++) {
-    const fields = records[i];
-    if (fields.length !== dim) throw new InputError(`${what}: line ${i + 1} has ${fields.length} values; the state ${names.join(', ')} needs ${dim}`);
+  for (const { fields, line } of headed ? records.slice(1) : records) {
+    if (fields.length !== dim) throw new ParseError(`${fields.length} values, where the state ${names.join(', ')} needs ${dim}`, line, what);
     for (let c = 0; c < dim; c++) {
       const field = fields[order[c]].trim();
-      const v = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/.test(field) ? Number(field) : NaN;
-      if (!Number.isFinite(v)) throw new InputError(`${what}: line ${i + 1}, ${names[c]} is ${JSON.stringify(field)}, not a finite number`);
+      const v = csvNumber(field);
+      if (v === undefined || !Number.isFinite(v)) throw new ParseError(`${names[c]} is ${JSON.stringify(field)}, not a finite number`, line, what);
       out.push(v);
     }
   }

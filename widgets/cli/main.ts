@@ -59,7 +59,7 @@ export async function main(argv: readonly string[]): Promise<number> {
         await simulate(rest);
         return 0;
       case 'spectrum':
-        process.stdout.write(spectrumCommand(rest));
+        process.stdout.write(await spectrumCommand(rest));
         return 0;
       case 'merge':
         process.stdout.write(await mergeCommand(rest));

@@ -26,7 +26,7 @@ import { parseArgs, wholeNumber } from './args.ts';
 import { REPRODUCE } from './commands.ts';
 import { usageLine } from './usage.ts';
 import { admitFileCode } from './trust-code.ts';
-import { InputError } from '../core/index.ts';
+import { InputError, roundTripNumber } from '../core/index.ts';
 
 /** Every number of a file's blocks, in order, with where it is. */
 async function* numbers(file: DatasetFile): AsyncGenerator<{ value: number; trajectory: number; row: number; column: number }> {
@@ -98,7 +98,8 @@ async function reproduceFile(path: string, options: ReproduceOptions): Promise<{
       if (!Object.is(x.value, y.value) && !(Number.isNaN(x.value) && Number.isNaN(y.value))) {
         const name = file.shape.columns[x.column];
         const where = file.shape.total > 1 ? `trajectory ${x.trajectory}, ` : '';
-        return { text: `${path}: differs at ${where}sample ${x.row}, ${name}: the file has ${x.value}, the run gives ${y.value}\n`, status: 1 };
+        // Written as the files write numbers, so that -0 and 0 read as the two doubles they are.
+        return { text: `${path}: differs at ${where}sample ${x.row}, ${name}: the file has ${roundTripNumber(x.value)}, the run gives ${roundTripNumber(y.value)}\n`, status: 1 };
       }
       // The comparison runs in microtasks alone: it returns to the event loop now and then to hear a signal.
       if (++compared % 4096 === 0) await breathe();

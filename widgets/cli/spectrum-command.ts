@@ -1,10 +1,14 @@
-import { readFileSync } from 'node:fs';
-import { checkWindowName, findPeaks, InputError, readTable, spectrum } from '../core/index.ts';
+/**
+ * `phasebook spectrum`: the strongest lines of one column's spectrum, for
+ * one trajectory of any file phasebook writes (formats/samples-read.ts).
+ */
+import { checkWindowName, findPeaks, InputError, spectrum } from '../core/index.ts';
 import { number, parseArgs, wholeNumber } from './args.ts';
 import { SPECTRUM } from './commands.ts';
+import { openSamples, type Samples } from './formats/samples-read.ts';
 import { usageLine } from './usage.ts';
 
-export function spectrumCommand(argv: readonly string[]): string {
+export async function spectrumCommand(argv: readonly string[]): Promise<string> {
   const args = parseArgs(argv, SPECTRUM);
   const input = args.values.get('input');
   const name = args.values.get('column');
@@ -14,20 +18,6 @@ export function spectrumCommand(argv: readonly string[]): string {
   const top = wholeNumber(args.values.get('top') ?? '5', '--top');
   const format = args.values.get('format') ?? 'text';
   if (format !== 'text' && format !== 'json') throw new InputError(`--format must be text or json, not "${format}"`);
-
-  let bytes: Buffer;
-  try {
-    bytes = readFileSync(input);
-  } catch (error) {
-    throw new InputError(`cannot read ${input}: ${(error as NodeJS.ErrnoException).code ?? (error as Error).message}`);
-  }
-  checkText(bytes, input);
-  const table = readTable(bytes.toString('utf8'), input);
-  const width = table.columns.length;
-  const c = table.columns.indexOf(name);
-  if (c < 0) throw new InputError(`no column "${name}" in ${input}; it has ${table.columns.join(', ')}`);
-  const t = table.columns.indexOf('t');
-  if (t < 0) throw new InputError(`${input} has no t column`);
   const bound = (name: string, fallback: number) => {
     const text = args.values.get(name);
     return text === undefined ? fallback : number(text, `--${name}`);
@@ -36,17 +26,13 @@ export function spectrumCommand(argv: readonly string[]): string {
   const to = bound('to', Infinity);
   if (to < from) throw new InputError(`--to (${to}) is before --from (${from})`);
 
-  const pick = trajectoryFilter(table, args.values.get('trajectory'), input);
-  const series: number[] = [];
-  const times: number[] = [];
-  for (let r = 0; r < table.rows; r++) {
-    const time = table.data[r * width + t];
-    if (pick(r) && time >= from && time <= to) {
-      const value = table.data[r * width + c];
-      if (!Number.isFinite(value)) throw new InputError(`${name} is ${value} at t = ${time} in ${input}; a spectrum needs finite samples (narrow --from/--to to leave it out)`);
-      times.push(time);
-      series.push(table.data[r * width + c]);
-    }
+  const samples = await openSamples(input);
+  let times: number[];
+  let series: number[];
+  try {
+    ({ times, series } = await seriesOf(samples, input, name, args.values.get('trajectory'), from, to));
+  } finally {
+    samples.close();
   }
   if (series.length < 4) throw new InputError(`only ${series.length} samples of ${name} lie in [${from}, ${to}]; a spectrum needs more`);
   const interval = (times[times.length - 1] - times[0]) / (times.length - 1);
@@ -60,6 +46,38 @@ export function spectrumCommand(argv: readonly string[]): string {
   );
   return `${name}: ${series.length} samples, Δt = ${interval.toPrecision(6)}, ${window} window\n${lines.join('\n')}\n`;
 }
+
+/**
+ * The samples of `name` in [from, to], of the one trajectory the file holds
+ * or the one --trajectory J picks (a dataset holds several, numbered).
+ */
+async function seriesOf(samples: Samples, input: string, name: string, given: string | undefined, from: number, to: number) {
+  const c = samples.columns.indexOf(name);
+  if (c < 0) throw new InputError(`no column "${name}" in ${input}; it has ${samples.columns.join(', ')}`);
+  if (!samples.columns.includes('t')) throw new InputError(`${input} has no t column`);
+  if (!samples.numbered && given !== undefined) throw new InputError(`${input} has no trajectory column: it holds one trajectory`);
+  const j = given === undefined ? undefined : wholeNumber(given, '--trajectory', 0);
+  // A dataset's meta says how many it holds: no need to read them all to know that one must be chosen.
+  if (j === undefined && samples.count !== undefined && samples.count > 1) throw severalIn(input, samples.count);
+  const ids = new Set<number>();
+  const times: number[] = [];
+  const series: number[] = [];
+  let unfit: { time: number; value: number } | undefined;
+  await samples.each(c, (trajectory, time, value) => {
+    ids.add(trajectory);
+    if ((j !== undefined && trajectory !== j) || !(time >= from && time <= to)) return;
+    if (!Number.isFinite(value)) unfit ??= { time, value };
+    times.push(time);
+    series.push(value);
+  });
+  // Which trajectory is said before what is wrong with its samples.
+  if (j === undefined && ids.size > 1) throw severalIn(input, ids.size);
+  if (j !== undefined && !ids.has(j)) throw new InputError(`${input} has no trajectory ${j}`);
+  if (unfit) throw new InputError(`${name} is ${unfit.value} at t = ${unfit.time} in ${input}; a spectrum needs finite samples (narrow --from/--to to leave it out)`);
+  return { times, series };
+}
+
+const severalIn = (input: string, count: number) => new InputError(`${input} holds ${count} trajectories: choose one with --trajectory J`);
 
 function validWindow(name: string) {
   try {
@@ -76,37 +94,4 @@ function checkUniform(times: readonly number[], interval: number): void {
       throw new InputError(`the samples are not equally spaced in t (at t = ${times[i - 1]}); a spectrum needs a uniform series`);
     }
   }
-}
-
-/**
- * A binary file (an NPZ or Parquet export, anything with NUL bytes) is said
- * to be one, rather than read as a CSV header of garbage.
- */
-function checkText(bytes: Buffer, input: string): void {
-  const head = bytes.subarray(0, 8192);
-  const magic = head.subarray(0, 4).toString('latin1');
-  const kind = magic === 'PAR1' ? 'a Parquet file' : magic === 'PK\x03\x04' ? 'a ZIP archive (an NPZ?)' : head.includes(0) ? 'binary' : undefined;
-  if (kind) throw new InputError(`${input} is ${kind}; spectrum reads CSV or JSON text, such as simulate --format csv writes`);
-}
-
-/**
- * The rows of one trajectory of a long table (a `trajectory` column, as a
- * dataset of many writes): --trajectory J, needed when there are several.
- */
-function trajectoryFilter(table: { columns: readonly string[]; rows: number; data: Float64Array }, given: string | undefined, input: string): (row: number) => boolean {
-  const column = table.columns.indexOf('trajectory');
-  const width = table.columns.length;
-  if (column < 0) {
-    if (given !== undefined) throw new InputError(`${input} has no trajectory column: it holds one trajectory`);
-    return () => true;
-  }
-  const ids = new Set<number>();
-  for (let r = 0; r < table.rows; r++) ids.add(table.data[r * width + column]);
-  if (given === undefined) {
-    if (ids.size > 1) throw new InputError(`${input} holds ${ids.size} trajectories: choose one with --trajectory J`);
-    return () => true;
-  }
-  const j = wholeNumber(given, '--trajectory', 0);
-  if (!ids.has(j)) throw new InputError(`${input} has no trajectory ${j}`);
-  return (row) => table.data[row * width + column] === j;
 }

@@ -1,4 +1,4 @@
-import { parseCSV } from './csv.ts';
+import { parseCSV } from './csv-read.ts';
 import type { ExportMeta } from './export-meta.ts';
 import { parseJSON } from './json-read.ts';
 import { ParseError } from './parse-error.ts';

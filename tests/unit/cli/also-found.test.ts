@@ -11,7 +11,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { main } from '../../../widgets/cli/main.ts';
-import { parseCSV } from '../../../widgets/core/csv.ts';
+import { parseCSV } from '../../../widgets/core/csv-read.ts';
 import { captureWrites, useScratchCache } from '../support/cli-harness.ts';
 
 // The first run of a model compiles it with mathjs; on a busy machine that alone can take seconds.
@@ -82,8 +82,8 @@ describe('spectrum', () => {
   }, 30_000);
 
   it.each([
-    ['a binary file', Buffer.from([0, 1, 2, 3, 0, 255, 10, 0]), /is binary; spectrum reads CSV or JSON text/],
-    ['an NPZ', Buffer.from('PK\x03\x04rest of an archive', 'latin1'), /is a ZIP archive \(an NPZ\?\)/],
+    ['a binary file', Buffer.from([0, 1, 2, 3, 0, 255, 10, 0]), /is binary; spectrum reads CSV, JSON, NPZ or Parquet files as phasebook writes them/],
+    ['a damaged NPZ', Buffer.from('PK\x03\x04rest of an archive', 'latin1'), /input\.dat is not a ZIP archive \(NPZ\) that can be read: no end of central directory/],
     ['a NaN sample', Buffer.from('t,q\n0,1\n1,NaN\n2,0\n3,1\n4,0\n'), /q is NaN at t = 1 in \S+; a spectrum needs finite samples/],
   ])('says what is wrong with %s, in one line', async (_, bytes, message) => {
     const file = join(dir, 'input.dat');
@@ -92,6 +92,18 @@ describe('spectrum', () => {
     expect(stderr.join('')).toMatch(message);
     expect(stderr.join('')).not.toMatch(/internal error/);
     oneLine();
+  });
+
+  it.each(['npz', 'parquet', 'json', 'csv'])('reads one trajectory of a %s dataset, as simulate wrote it: the lines of that trajectory alone', async (format) => {
+    // Three oscillators of amplitudes from the grid; ω = 1, so every line is at f = 1/2π whatever the format.
+    const set = join(dir, `set.${format}`);
+    expect(await simulate('--hamiltonian', 'p^2/2 + q^2/2', '--dof', '1', '--grid', 'q=1:3:3,p=0', '--t-end', '60', '--every', '40', '--output', set)).toBe(0);
+    expect(await main(['spectrum', '--input', set, '--column', 'q', '--trajectory', '2', '--top', '1', '--format', 'json'])).toBe(0);
+    const { peaks } = JSON.parse(stdout.join(''));
+    expect(peaks[0].frequency).toBeCloseTo(1 / (2 * Math.PI), 2);
+    expect(peaks[0].amplitude).toBeCloseTo(3, 1);
+    expect(await main(['spectrum', '--input', set, '--column', 'q'])).toBe(2);
+    expect(stderr.join('')).toBe(`phasebook: ${set} holds 3 trajectories: choose one with --trajectory J\n`);
   });
 });
 

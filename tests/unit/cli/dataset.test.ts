@@ -12,8 +12,8 @@ import { join } from 'node:path';
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { ROOT } from '../../../bin/cli-bundle.mjs';
 import { main } from '../../../widgets/cli/main.ts';
-import { parseCSV } from '../../../widgets/core/csv.ts';
-import { parseJSON } from '../../../widgets/core/index.ts';
+import { parseCSV } from '../../../widgets/core/csv-read.ts';
+import { parseJSON, toJSON } from '../../../widgets/core/index.ts';
 import { npzJs, numpyLoad, parquetJs, pyarrowRead, pythonHas, type LoadedArrays, type LoadedTable } from '../support/dataset-readers.ts';
 import { captureWrites, useScratchCache } from '../support/cli-harness.ts';
 
@@ -402,6 +402,36 @@ describe('phasebook reproduce', () => {
     expect(stdout.join('')).toMatch(/differs at trajectory 1, sample 1, t: the file has 0\.4999, the run gives 0\.5/);
   });
 
+  it('finds a number changed by one ulp, or 0 turned to -0: bit for bit, status 1, naming trajectory, sample and column', async () => {
+    const out = join(dir, 'r.json');
+    expect(await simulate(...OSCILLATOR, '--grid', 'q=0:1:3,p=0', '--t-end', '1', '--every', '250', '--format', 'json', '--output', out)).toBe(0);
+    const { meta, table } = parseJSON(readFileSync(out, 'utf8'));
+    const w = table.columns.length;
+    // Columns trajectory, t, q, p, H, trajectory after trajectory.
+    const samples = (meta as unknown as { samples: number }).samples;
+    const at = (j: number, sample: number, column: string) => (j * samples + sample) * w + table.columns.indexOf(column);
+    const original = table.data[at(1, 3, 'q')];
+    const bits = new DataView(new ArrayBuffer(8));
+    bits.setFloat64(0, original);
+    bits.setBigUint64(0, bits.getBigUint64(0) + 1n);
+    const nextUp = bits.getFloat64(0);
+    expect(nextUp - original).toBeLessThan(1e-15);
+    const changed = Float64Array.from(table.data);
+    changed[at(1, 3, 'q')] = nextUp;
+    writeFileSync(out, toJSON({ ...table, data: changed }, meta));
+    expect(await main(['reproduce', out, '--workers', '1'])).toBe(1);
+    expect(stdout.join('')).toBe(`${out}: differs at trajectory 1, sample 3, q: the file has ${nextUp}, the run gives ${original}\n`);
+
+    stdout.length = 0;
+    // p starts at 0 in every trajectory: the file's -0 is another double.
+    const signed = Float64Array.from(table.data);
+    expect(Object.is(signed[at(2, 0, 'p')], 0)).toBe(true);
+    signed[at(2, 0, 'p')] = -0;
+    writeFileSync(out, toJSON({ ...table, data: signed }, meta));
+    expect(await main(['reproduce', out, '--workers', '1'])).toBe(1);
+    expect(stdout.join('')).toBe(`${out}: differs at trajectory 2, sample 0, p: the file has -0, the run gives 0\n`);
+  });
+
   it('rebuilds a file with its own rows from its meta: t-end is in it (3.65 every 100 steps: 74 rows)', async () => {
     const out = join(dir, 'one.json');
     expect(await simulate(...OSCILLATOR, '--initial', '1,0', '--t-end', '3.65', '--every', '100', '--format', 'json', '--output', out)).toBe(0);
@@ -416,7 +446,7 @@ describe('bad input: one line on stderr, status 2, no file left', () => {
   const out = () => join(dir, 'out.npz');
   it.each([
     ['an initial file with a column the state lacks', () => ['--initial-file', write('i.csv', 'q,x\n1,0\n')], /has a column "x", which is not a component of the state \(q, p\)/],
-    ['an initial file with NaN', () => ['--initial-file', write('i.csv', 'q,p\n1,0\n2,NaN\n')], /line 3, p is "NaN", not a finite number/],
+    ['an initial file with NaN', () => ['--initial-file', write('i.csv', 'q,p\n1,0\n2,NaN\n')], /--initial-file i\.csv line 3: p is "NaN", not a finite number/],
     ['an initial NPY of the wrong shape', () => ['--initial-file', write('i.json', '[[1, 2, 3]]')], /row 1 has 3 values; the state q, p needs 2/],
     ['an energy with no solution', () => ['--sample', '3', '--box', 'q=-1:1,p=-1:1', '--energy', '-1'], /no point of the box reaches H = -1 with p in \[-1, 1\]/],
     ['a shard index out of range', () => ['--sample', '3', '--box', 'q=-1:1,p=-1:1', '--shard', '5/4'], /--shard 5\/4: the shard number runs from 1 to 4/],

@@ -11,6 +11,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterEach, beforeAll, beforeEach, describe, expect, it } from 'vitest';
 import { ensureCli, ROOT } from '../../../bin/cli-bundle.mjs';
+import { parseJSON, toJSON } from '../../../widgets/core/index.ts';
 
 const BIN = join(ROOT, 'bin/phasebook.mjs');
 
@@ -65,10 +66,8 @@ const SET = ['--dof', '1', '--sample', '3', '--seed', '1', '--box', 'q=-1:1,p=-1
 async function craftedJson(hamiltonian: string): Promise<string> {
   const file = join(scratch, 'crafted.json');
   await simulate(['--hamiltonian', '(t, [q, p]) => { if (q > 9) return 0; return p * p / 2 + q * q / 2; }', ...SET, '--output', file]);
-  const [head, ...rest] = readFileSync(file, 'utf8').split('\n');
-  const meta = JSON.parse(head.slice('{"meta":'.length, -1));
-  meta.hamiltonian = hamiltonian;
-  writeFileSync(file, [`{"meta":${JSON.stringify(meta)},`, ...rest].join('\n'));
+  const { meta, table } = parseJSON(readFileSync(file, 'utf8'));
+  writeFileSync(file, toJSON(table, { ...meta, hamiltonian }));
   return file;
 }
 
@@ -156,10 +155,9 @@ describe('damaged files, said with their names', () => {
   ])('reproduce refuses a meta with %s in one line naming the file', async (_, damage, message) => {
     const file = join(scratch, 'data.json');
     await simulate(['--hamiltonian', 'p^2/2 + q^2/2', ...SET, '--output', file]);
-    const [head, ...rest] = readFileSync(file, 'utf8').split('\n');
-    const meta = JSON.parse(head.slice('{"meta":'.length, -1));
+    const { meta, table } = parseJSON(readFileSync(file, 'utf8'));
     damage(meta);
-    writeFileSync(file, [`{"meta":${JSON.stringify(meta)},`, ...rest].join('\n'));
+    writeFileSync(file, toJSON(table, meta));
     const exit = await phasebook(['reproduce', file]);
     expect(exit.code).toBe(2);
     oneLine(exit);
@@ -178,7 +176,7 @@ describe('damaged files, said with their names', () => {
     const exit = await phasebook(['merge', '--output', out, join(scratch, 's1.json'), shard]);
     expect(exit.code).toBe(2);
     oneLine(exit);
-    expect(exit.stderr).toBe(`phasebook: ${shard}: line 5 has 4 values; a row of this file has 5\n`);
+    expect(exit.stderr).toBe(`phasebook: ${shard} line 5: data row 1 has 4 values, expected 5\n`);
     expect(existsSync(out)).toBe(false);
     expect(partials()).toEqual([]);
   }, 30_000);

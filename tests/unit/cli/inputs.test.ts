@@ -10,8 +10,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterEach, beforeAll, beforeEach, describe, expect, it } from 'vitest';
 import { ensureCli, ROOT } from '../../../bin/cli-bundle.mjs';
-import { csvRecords } from '../../../widgets/cli/csv-records.ts';
-import { parseCSV } from '../../../widgets/core/csv.ts';
+import { parseCSV } from '../../../widgets/core/csv-read.ts';
 
 const BIN = join(ROOT, 'bin/phasebook.mjs');
 const RUN = ['simulate', '--dof', '1', '--t-end', '0.01', '--every', '10'];
@@ -65,18 +64,13 @@ describe('--initial-file as RFC 4180 CSV', () => {
     ]);
   });
 
-  it('splits records as RFC 4180 says, and refuses what it does not allow', () => {
-    expect(csvRecords('"a,b","say ""hi""",c\n1,"two\nlines",3\n', 'f')).toEqual([
-      ['a,b', 'say "hi"', 'c'],
-      ['1', 'two\nlines', '3'],
-    ]);
-    expect(csvRecords('q, "p" \n1,2', 'f')).toEqual([
-      ['q', 'p'],
-      ['1', '2'],
-    ]);
-    expect(() => csvRecords('"q,p\n1,2\n', 'f')).toThrow(/f: the quoted field that starts on line 1 is never closed/);
-    expect(() => csvRecords('q"x",p\n', 'f')).toThrow(/f: line 1 has a quote inside a field/);
-    expect(() => csvRecords('"q"x,p\n', 'f')).toThrow(/f: line 1 has text after a closing quote/);
+  it('refuses what RFC 4180 does not allow, or a number outside the grammar, naming the file and the line, in one line', async () => {
+    // The records and the numbers are the core's one CSV reader's (tests/unit/core/readers.test.ts).
+    const file = join(scratch, 'initial.csv');
+    writeFileSync(file, 'q,p\n1,"0\n2,0\n');
+    refused(await phasebook([...OSCILLATOR, '--initial-file', file]), /^phasebook: --initial-file initial\.csv line 2: a quoted field opens here and is never closed\n$/);
+    writeFileSync(file, 'q,p\n1,0\n"2\n",0x1\n');
+    refused(await phasebook([...OSCILLATOR, '--initial-file', file]), /^phasebook: --initial-file initial\.csv line 3: p is "0x1", not a finite number\n$/);
   });
 });
 

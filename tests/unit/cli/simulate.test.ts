@@ -6,7 +6,7 @@ import { promisify } from 'node:util';
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { main } from '../../../widgets/cli/main.ts';
 import { canonicalEquations } from '../../../widgets/core/canonical-equations.ts';
-import { parseCSV } from '../../../widgets/core/csv.ts';
+import { parseCSV } from '../../../widgets/core/csv-read.ts';
 import { parseJSON } from '../../../widgets/core/index.ts';
 import { Simulation } from '../../../widgets/core/simulation.ts';
 import { captureWrites, useScratchCache } from '../support/cli-harness.ts';
@@ -110,7 +110,7 @@ describe('phasebook spectrum', () => {
   });
 
   it.each([
-    [['--input', 'missing.csv', '--column', 'q'], /cannot read missing\.csv: ENOENT/],
+    [['--input', 'missing.csv', '--column', 'q'], /cannot read missing\.csv: no such file/],
     [['--column', 'q'], /--input is required/],
     [['--input', '@DATA', '--column', 'x'], /no column "x"/],
     [['--input', '@DATA', '--column', 'q', '--window', 'hann'], /--window must be hamming or none/],

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { csvHeader, csvRows, parseCSV, roundTripNumber, toCSV } from '../../../widgets/core/csv.ts';
+import { csvHeader, csvRows, roundTripNumber, toCSV } from '../../../widgets/core/csv.ts';
+import { parseCSV } from '../../../widgets/core/csv-read.ts';
 import { jsonHead, jsonRows, jsonTail, parseJSON, toJSON, type ExportMeta } from '../../../widgets/core/index.ts';
 import { ParseError } from '../../../widgets/core/parse-error.ts';
 import { readTable } from '../../../widgets/core/read-table.ts';
@@ -149,7 +150,7 @@ describe('CSV: csvHeader(columns) / csvRows(data, width, from, to) / toCSV(table
       ['t,x\n0,0x10\n', 2, /"0x10" is not a number/],
       ['t,x\n0,\n', 2, /"" is not a number/],
       ['t,x\n0,1e\n', 2, /"1e" is not a number/],
-      ['t,x\n0,"1"\n', 2, /is not a number/],
+      ['t,x\n0,1"\n', 2, /a quote inside a field/],
       ['', 1, /empty input/],
       ['t,t\n0,1\n', 1, /duplicate column name "t"/],
       ['t,,x\n', 1, /empty column name/],
