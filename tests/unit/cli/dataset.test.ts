@@ -14,13 +14,14 @@ import { ROOT } from '../../../bin/cli-bundle.mjs';
 import { main } from '../../../widgets/cli/main.ts';
 import { parseCSV } from '../../../widgets/core/csv-read.ts';
 import { parseJSON, toJSON } from '../../../widgets/core/index.ts';
-import { npzJs, numpyLoad, parquetJs, pyarrowRead, pythonHas, type LoadedArrays, type LoadedTable } from '../support/dataset-readers.ts';
+import { npzJs, numpyLoad, parquetJs, pyarrowRead, runsWithPython, type LoadedArrays, type LoadedTable } from '../support/dataset-readers.ts';
 import { captureWrites, useScratchCache } from '../support/cli-harness.ts';
 
 const BIN = join(ROOT, 'bin/phasebook.mjs');
 const OSCILLATOR = ['--hamiltonian', 'p^2/2 + q^2/2', '--dof', '1'];
-const HAS_NUMPY = pythonHas('numpy');
-const HAS_PYARROW = pythonHas('pyarrow');
+// Where python3 has them, and always under CI, which installs them (.ci/run): there, without them, these tests fail.
+const HAS_NUMPY = runsWithPython('numpy');
+const HAS_PYARROW = runsWithPython('pyarrow');
 const TOLERANCE = 1e-12;
 
 // The first run of a model compiles it with mathjs; on a busy machine that alone can take seconds.

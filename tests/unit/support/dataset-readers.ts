@@ -1,9 +1,14 @@
 /**
  * Readers of NPZ and Parquet that are not phasebook's: Python's numpy and
- * pyarrow when this machine has them, and always two maintained JavaScript
- * ones, fflate + npyjs for NPZ and parquet-wasm (the Rust Arrow project's
- * Parquet reader, compiled to WebAssembly) + apache-arrow for Parquet, so a
- * fresh machine without Python still checks both formats independently.
+ * pyarrow, and always two maintained JavaScript ones, fflate + npyjs for NPZ
+ * and parquet-wasm (the Rust Arrow project's Parquet reader, compiled to
+ * WebAssembly) + apache-arrow for Parquet, so a fresh machine without
+ * Python still checks both formats independently.
+ *
+ * The Python readers are what researchers load these files with, so CI must
+ * run them: .ci/run installs them, pinned (.ci/python-requirements.txt), and
+ * under CI a test that needs them runs whether or not python3 has them, and
+ * so fails rather than skips when they are missing. Elsewhere it is skipped.
  */
 import { spawnSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
@@ -18,8 +23,21 @@ export function pythonHas(...modules: string[]): boolean {
   return run.status === 0;
 }
 
+/** Whether this is a CI run (CI set, as .ci/run and every CI service set it), where nothing that needs Python may skip. */
+export function inCI(): boolean {
+  const ci = process.env.CI;
+  return ci !== undefined && ci !== '' && ci !== '0' && ci.toLowerCase() !== 'false';
+}
+
+/** Whether a test that needs these Python modules runs: where python3 has them, and always under CI. */
+export function runsWithPython(...modules: string[]): boolean {
+  return inCI() || pythonHas(...modules);
+}
+
 function python(script: string, ...args: string[]): unknown {
   const run = spawnSync('python3', ['-c', script, ...args], { encoding: 'utf8', maxBuffer: 1 << 28 });
+  if (run.error) throw new Error(`python3 cannot be run (${run.error.message}): .ci/run installs it with numpy and pyarrow`);
+  if (/ModuleNotFoundError/.test(run.stderr)) throw new Error(`python3 lacks a reader: .ci/run installs numpy and pyarrow, pinned in .ci/python-requirements.txt (${run.stderr.trim().split('\n').pop()})`);
   if (run.status !== 0) throw new Error(`python3 failed: ${run.stderr}`);
   return JSON.parse(run.stdout);
 }
