@@ -15,6 +15,8 @@ export type CellDefinition = (...inputs: never[]) => unknown;
 
 type FunctionMaker = new (...parametersAndBody: string[]) => CellDefinition;
 
+// Taken now, before any cell runs: the sandbox later puts guarded versions in the globals' place.
+const PlainFunction = Function as unknown as FunctionMaker;
 const AsyncFunction = Object.getPrototypeOf(async function () {}).constructor as FunctionMaker;
 const GeneratorFunction = Object.getPrototypeOf(function* () {}).constructor as FunctionMaker;
 const AsyncGeneratorFunction = Object.getPrototypeOf(async function* () {}).constructor as FunctionMaker;
@@ -23,7 +25,7 @@ function pickMaker(spec: CellSpec): FunctionMaker {
   if (spec.async && spec.generator) return AsyncGeneratorFunction;
   if (spec.async) return AsyncFunction;
   if (spec.generator) return GeneratorFunction;
-  return Function as unknown as FunctionMaker;
+  return PlainFunction;
 }
 
 /** The name the loop guard has inside a cell's code. */
@@ -90,16 +92,37 @@ function checked(value: unknown, guard: LoopGuard, before: number): unknown {
 }
 
 /**
- * Builds the definition. `label` names the cell in stack traces and in the
- * browser's debugger (via sourceURL), and in the loop guard's message.
+ * Names a cell's code sees in place of the page's globals of the same name
+ * (the sandbox's guarded `Array`, say): reader code is compiled with them,
+ * the chapter's own cells without.
  */
-export function compileCell(source: string, spec: CellSpec, label: string, guard: LoopGuard = pageLoopGuard): CellDefinition {
-  const Maker = pickMaker(spec);
-  const sourceUrl = `\n//# sourceURL=cell:${encodeURIComponent(label)}`;
-  const code = new Maker(...spec.inputs, GUARD, cellBody(source, spec) + sourceUrl) as (...args: unknown[]) => unknown;
-  const loop = guard.forCell(spec.name ? `cell ${spec.name}` : 'this cell');
+export type CellScope = Readonly<Record<string, unknown>>;
+
+/**
+ * The cell's function. With a scope, it is made inside a function whose
+ * parameters are the scope's names, so that the cell's own declarations
+ * (`const Array = …` in a block) shadow them rather than clash with them.
+ */
+function makeCode(spec: CellSpec, body: string, sourceUrl: string, scope: CellScope | undefined): (...args: unknown[]) => unknown {
+  if (!scope) return new (pickMaker(spec))(...spec.inputs, GUARD, body + sourceUrl) as (...args: unknown[]) => unknown;
+  const kind = `${spec.async ? 'async ' : ''}function${spec.generator ? '*' : ''}`;
+  // The cell's body starts on the line it started on before, so positions in stack traces stay the same.
+  const outer = new PlainFunction(...Object.keys(scope), `return ${kind} (${[...spec.inputs, GUARD].join(', ')}) {${body}\n}${sourceUrl}`);
+  return (outer as unknown as (...values: unknown[]) => unknown)(...Object.values(scope)) as (...args: unknown[]) => unknown;
+}
+
+/**
+ * Builds the definition. `id` names the cell in stack traces and in the
+ * browser's debugger (via sourceURL), and to the loop guard; its name, when
+ * it has one, is what the guard's message says. `scope` (reader code only)
+ * replaces some globals, see {@link CellScope}.
+ */
+export function compileCell(source: string, spec: CellSpec, id: string, guard: LoopGuard = pageLoopGuard, scope?: CellScope): CellDefinition {
+  const sourceUrl = `\n//# sourceURL=cell:${encodeURIComponent(id)}`;
+  const code = makeCode(spec, cellBody(source, spec), sourceUrl, scope);
+  const loop = guard.forCell(id, spec.name ? `cell ${spec.name}` : 'this cell');
   return ((...inputs: unknown[]) => {
-    noteCellRun(label);
+    noteCellRun(id);
     const before = guard.count;
     return checked(code(...inputs, loop), guard, before);
   }) as CellDefinition;
