@@ -41,6 +41,8 @@ const GROUPS = [
   [/widgets\/core\/(expression\/(?!names|mathjs-instance)|compile-model|js-function\/translate)/, 'compiler'],
   [/widgets\/core\/(integrators\/|js-function\/|expression\/names|canonical-equations|compiled-model|model-from-compiled|rk38)/, 'model'],
   [/widgets\/core\/dataset\//, 'dataset'],
+  // The guards reader code runs under: loaded only when an edit first runs (cells/sandbox/index.ts).
+  [/widgets\/cells\/sandbox\//, 'sandbox'],
   [/widgets\/core\/(?!index|expression\/mathjs-instance)[^/]+$|widgets\/book\/cell-simulation\.ts/, 'core'],
   [/widgets\/book\/(chart|table|theory-check|tex|stability-chart|compile-client|poincare-section|method-comparison)/, (m) => m[1]],
   [/widgets\/book\/check-verdict/, 'theory-check'],

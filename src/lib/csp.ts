@@ -17,6 +17,16 @@
  *   site, and make no request of their own.
  *
  * A blocked request shows under the cell that made it (widgets/cells/boot.ts).
+ *
+ * What a policy cannot say is left to the sandbox reader code runs in
+ * (widgets/cells/sandbox/): navigations (`navigate-to` never shipped; the
+ * Navigation API's `navigate` event cancels a cell's, navigation.ts),
+ * WebRTC (no directive in Chromium; the constructors are removed,
+ * network.ts), link hints such as preconnect (no directive; refused before
+ * they enter the page, dom-guard.ts), and the code a cell would make with
+ * eval, which `'unsafe-eval'` has to allow for the book's own compiling
+ * (refused when a cell asks, code-from-text.ts). `form-action 'self'` stays
+ * as the policy's own word on forms.
  */
 import { createHash } from 'node:crypto';
 
