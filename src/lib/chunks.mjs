@@ -43,6 +43,10 @@ const GROUPS = [
   [/widgets\/core\/dataset\//, 'dataset'],
   // The guards reader code runs under: loaded only when an edit first runs (cells/sandbox/index.ts).
   [/widgets\/cells\/sandbox\//, 'sandbox'],
+  // What the page says when storage or the page itself was damaged.
+  [/widgets\/cells\/recovery\.ts$/, 'recovery'],
+  // The cells a reader adds: built only on a page that has one, or when one is added.
+  [/widgets\/cells\/added-cells\.ts$/, 'added-cells'],
   [/widgets\/core\/(?!index|expression\/mathjs-instance)[^/]+$|widgets\/book\/cell-simulation\.ts/, 'core'],
   [/widgets\/book\/(chart|table|theory-check|tex|stability-chart|compile-client|poincare-section|method-comparison)/, (m) => m[1]],
   [/widgets\/book\/check-verdict/, 'theory-check'],

@@ -16,7 +16,6 @@
  * reader's own saved edits (share-session.ts, share-ui.ts, loaded then).
  */
 import { PAGE_DATA_ATTRIBUTE, pageContext } from '../book/page-data.ts';
-import { downloadText } from '../data/download.ts';
 import { createLibrary, prefetchWidgets } from '../library.ts';
 import { createBuiltins } from './builtins.ts';
 import { blockedMessage, cellOfSource, recentCell, stackOf } from './cell-errors.ts';
@@ -24,7 +23,7 @@ import type { LiveCell } from './cell.ts';
 import { ChapterCells } from './chapter.ts';
 import { watchScrollables } from './scrollables.ts';
 import { PROVENANCE_EVENT, type ProvenanceRequest } from '../data/provenance.ts';
-import { MathSnapshot, pageIntact, showPageBroken } from './integrity.ts';
+import { MathSnapshot, pageIntact } from './integrity.ts';
 import { formatError } from './spec.ts';
 import { INPUT_EVENT, type WidgetInput } from '../controls/widget-input.ts';
 import { currentCellSignal, Notebook } from './runtime.ts';
@@ -43,8 +42,13 @@ function markComplete(): void {
   document.body.dataset.cellsComplete = '';
 }
 
-/** Every edit on the page as one JSON file, for a reader whose browser will not keep them. */
-function downloadEdits(cells: readonly LiveCell[]): void {
+/**
+ * Every edit on the page as one JSON file, for a reader whose browser will
+ * not keep them. Rarely wanted, so its module loads then (a page's first
+ * scripts stay small).
+ */
+async function downloadEdits(cells: readonly LiveCell[]): Promise<void> {
+  const { downloadText } = await import('../data/download.ts');
   const edits = cells.flatMap((cell) => (cell.edit ? [{ cell: cell.id, ...cell.edit }] : []));
   const file = { page: location.href, saved: new Date().toISOString(), edits };
   const name = `phasebook-edits-${location.pathname.split('/').filter(Boolean).pop() ?? 'page'}.json`;
@@ -132,13 +136,13 @@ function boot(): void {
     if (isShareFragment(location.hash)) location.reload();
   });
   if (!isShareFragment(location.hash)) {
-    start(root, null);
+    void start(root, null);
     return;
   }
   void openSharedLink(root).then((shared) => start(root, shared));
 }
 
-function start(root: HTMLElement, shared: SharedView | null): void {
+async function start(root: HTMLElement, shared: SharedView | null): Promise<void> {
   // Keyed by the page's path, base path included: two books on one origin keep their edits apart.
   const store = shared?.store ?? new EditStore(location.pathname);
   const data = [...document.querySelectorAll(`template[${PAGE_DATA_ATTRIBUTE}]`)].map((t) => t.getAttribute(PAGE_DATA_ATTRIBUTE));
@@ -149,11 +153,12 @@ function start(root: HTMLElement, shared: SharedView | null): void {
   const math = new MathSnapshot();
   const scheduler = new CellScheduler(markReady, markComplete, (cell) => prefetchWidgets(cell.root));
   const chapter: ChapterCells = new ChapterCells(root, store, notebook, scheduler, {
-    downloadEdits: () => downloadEdits(chapter.cells),
+    downloadEdits: () => void downloadEdits(chapter.cells),
     checkPage: () => ({ restored: math.restore(), intact: pageIntact(root) }),
-    pageBroken: showPageBroken,
+    // The notice loads then; whatever the cell left of the page, a module still loads.
+    pageBroken: (label) => void import('./recovery.ts').then((m) => m.showPageBroken(label)),
   });
-  chapter.build();
+  await chapter.build();
   const { cells } = chapter;
   wireShareButton(chapter);
   if (shared) void loadShare().then((m) => m.showSharedBanner(shared, chapter));

@@ -4,12 +4,12 @@
  * through, adds and deletes the reader's cells, and says what the reader
  * changed (provenance, for the data exports).
  */
-import { addedCellElement, addedCellId } from './added-cells.ts';
 import { LiveCell, type CellHooks } from './cell.ts';
-import type { SharedCell } from './share-format.ts';
 import type { Notebook } from './runtime.ts';
 import type { CellScheduler } from './schedule.ts';
-import type { EditStore } from './storage.ts';
+import { explainLoadFailure } from './load-failure.ts';
+import { formatError } from './spec.ts';
+import type { AddedCell, EditStore } from './storage.ts';
 import { CellView } from './cell-view.ts';
 
 /** What the page does for every cell, besides what ChapterCells itself does. */
@@ -24,6 +24,9 @@ export interface ChangedCell {
   readonly added: boolean;
 }
 
+/** The code that builds a cell of the reader's: wanted only where the reader added one. */
+const loadAddedCells = () => import('./added-cells.ts');
+
 export class ChapterCells {
   readonly cells: LiveCell[] = [];
   readonly #root: HTMLElement;
@@ -31,6 +34,8 @@ export class ChapterCells {
   readonly #notebook: Notebook;
   readonly #scheduler: CellScheduler;
   readonly #hooks: PageHooks;
+  /** Added cells that could not be put back (their code did not load): kept in storage as they are. */
+  #addedKept: readonly AddedCell[] | null = null;
 
   constructor(root: HTMLElement, store: EditStore, notebook: Notebook, scheduler: CellScheduler, hooks: PageHooks) {
     this.#root = root;
@@ -40,18 +45,40 @@ export class ChapterCells {
     this.#hooks = hooks;
   }
 
-  /** Makes the cells of the chapter's markup, then puts back the ones the reader added on earlier visits. */
-  build(): void {
+  /**
+   * Makes the cells of the chapter's markup, then puts back the ones the
+   * reader added on earlier visits; the code that builds those loads only
+   * on a page that has some (added-cells.ts, a chunk of its own).
+   */
+  async build(): Promise<void> {
     for (const element of this.#root.querySelectorAll<HTMLElement>('[data-cell]')) this.#make(element);
-    for (const { id, after } of this.#store.loadAdded()) {
+    const added = this.#store.loadAdded();
+    if (!added.length) return;
+    let addedCellElement: typeof import('./added-cells.ts').addedCellElement;
+    try {
+      ({ addedCellElement } = await loadAddedCells());
+    } catch (error) {
+      // Offline: the chapter's cells run, the reader's own stay kept (never written over) for the next load.
+      this.#addedKept = added;
+      console.warn(explainLoadFailure(error, 'The cells you added'));
+      return;
+    }
+    for (const { id, after } of added) {
       const anchor = this.cells.find((cell) => cell.id === after) ?? this.cells.at(-1);
-      if (anchor && !this.cells.some((cell) => cell.id === id)) this.#insert(anchor, id);
+      if (anchor && !this.cells.some((cell) => cell.id === id)) this.#insert(anchor, addedCellElement(anchor.root, id));
     }
   }
 
   /** Adds an empty cell of the reader's below `anchor`, starts it, and puts the cursor in it. */
-  add(anchor: LiveCell): LiveCell | null {
-    const cell = this.#insert(anchor, addedCellId());
+  async add(anchor: LiveCell): Promise<LiveCell | null> {
+    let module: typeof import('./added-cells.ts');
+    try {
+      module = await loadAddedCells();
+    } catch (error) {
+      anchor.showLaterError(formatError(explainLoadFailure(error, 'A new cell')));
+      return null;
+    }
+    const cell = this.#insert(anchor, module.addedCellElement(anchor.root, module.addedCellId()));
     if (!cell) return null;
     this.#saveAdded();
     this.#scheduler.want(cell);
@@ -68,6 +95,11 @@ export class ChapterCells {
     this.#saveAdded();
   }
 
+  /** Where the reader's edits are kept (the share code reads the edits of cells not started yet). */
+  get store(): EditStore {
+    return this.#store;
+  }
+
   /** The reader's edits and added cells, in page order. */
   provenance(): ChangedCell[] {
     return this.cells.flatMap((cell) => {
@@ -77,41 +109,7 @@ export class ChapterCells {
     });
   }
 
-  /**
-   * What a shared link carries (share-ui.ts): the text each changed cell
-   * shows, and every added cell that has text, in page order; `unrun` names
-   * the cells whose text shown is not the code that runs. A cell not
-   * started yet shows, once started, its saved edit unless that is offered
-   * instead (drafts.ts), so that is what it contributes.
-   */
-  shareable(): { cells: SharedCell[]; unrun: string[] } {
-    const cells: SharedCell[] = [];
-    const unrun: string[] = [];
-    let after: string | null = null;
-    for (const cell of this.cells) {
-      const text = this.#shownEdit(cell);
-      if (text && text.draft !== text.running) unrun.push(cell.id);
-      if (cell.added && text?.draft) cells.push({ kind: 'added', id: cell.id, source: text.draft, after: after ?? cell.id });
-      else if (!cell.added && text) cells.push({ kind: 'edit', id: cell.id, source: text.draft, base: cell.root.dataset.cellHash ?? '' });
-      if (!cell.added || text?.draft) after = cell.id;
-    }
-    // An added cell above every chapter cell cannot be: added cells always follow one.
-    return { cells: cells.filter((c) => c.kind === 'edit' || c.after !== c.id), unrun };
-  }
-
-  /** The text a cell shows and the code it runs, when either is not the chapter's (null: the original). */
-  #shownEdit(cell: LiveCell): { draft: string; running: string } | null {
-    if (cell.started) return cell.edit;
-    const saved = this.#store.load(cell.id);
-    if (!saved || this.#store.wasRunning(cell.id) || saved.base !== (cell.root.dataset.cellHash ?? '')) return null;
-    // Not started: its <pre> still holds the chapter's original.
-    const original = cell.root.querySelector('pre.cell-code > code')?.textContent ?? '';
-    const running = saved.ran ?? original;
-    return saved.draft === original && running === original ? null : { draft: saved.draft, running };
-  }
-
-  #insert(anchor: LiveCell, id: string): LiveCell | null {
-    const element = addedCellElement(anchor.root, id);
+  #insert(anchor: LiveCell, element: HTMLElement): LiveCell | null {
     anchor.root.after(element);
     const cell = this.#make(element);
     if (cell) {
@@ -142,6 +140,7 @@ export class ChapterCells {
   }
 
   #saveAdded(): void {
+    if (this.#addedKept) return;
     const added = this.cells.flatMap((cell, i) => (cell.added && i > 0 ? [{ id: cell.id, after: this.cells[i - 1].id }] : []));
     this.#store.saveAdded(added);
   }

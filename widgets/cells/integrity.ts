@@ -3,7 +3,7 @@
  * widgets. Cells run in the page's own global scope, so a cell can replace
  * `Math.sqrt` (which every generated stepper and plot calls) or empty
  * `document.body`. The first is undone at once; the second cannot be, so
- * the page says what happened and how to get it back.
+ * the page says what happened and how to get it back (recovery.ts).
  */
 
 /** Math as the page found it: every function and constant. */
@@ -33,18 +33,4 @@ export class MathSnapshot {
 /** True while the chapter's content is still in the page (a cell may have emptied it). */
 export function pageIntact(chapterRoot: Element): boolean {
   return chapterRoot.isConnected && document.body?.contains(chapterRoot) === true;
-}
-
-/** Shows, over whatever is left, that cell `label` removed the page and that a reload brings it back. */
-export function showPageBroken(label: string): void {
-  const id = 'phasebook-page-broken';
-  if (document.getElementById(id)) return;
-  const banner = document.createElement('div');
-  banner.id = id;
-  banner.setAttribute('role', 'alert');
-  banner.style.cssText =
-    'position:fixed;inset:1rem 1rem auto;z-index:2147483647;padding:0.8rem 1rem;border:1px solid #a3261b;border-radius:6px;' +
-    'background:#fbeceb;color:#a3261b;font:16px/1.4 system-ui,sans-serif;';
-  banner.textContent = `The code of ${label} removed this page's content. Reload the page to get it back: your edit will be offered, not run.`;
-  (document.body ?? document.documentElement).append(banner);
 }

@@ -11,6 +11,7 @@
  * (a page from an older build has none: then nothing here does anything).
  */
 import type { ChapterCells } from './chapter.ts';
+import { shareable } from './share-contents.ts';
 import { decodeShare, encodeShare, type SharedCell } from './share-format.ts';
 import { keepShared, markSharedRun, ownEdits, planShared, sharedStore, type PageCell, type SharedPlan } from './share-session.ts';
 import { EditStore } from './storage.ts';
@@ -54,7 +55,7 @@ export async function shareEdits(chapter: ChapterCells): Promise<void> {
 
 async function share(chapter: ChapterCells, panel: HTMLElement): Promise<void> {
   // Text typed in the last moments is in the cells' editors, which shareable() reads.
-  const { cells, unrun } = chapter.shareable();
+  const { cells, unrun } = shareable(chapter.cells, chapter.store);
   panel.hidden = false;
   // One live region, kept across clicks, so that each new message is announced.
   let status = panel.querySelector<HTMLElement>('.share-status');
