@@ -5,7 +5,7 @@
  * old browser, a policy that forbids it) the model is compiled on the page
  * as before: slower to start, the same result.
  */
-import { type BuildControl, type CompiledModel, InputError, type ModelKeySpec } from '../core/index.ts';
+import { type BuildControl, type CompiledModel, InputError, MAX_DOF, type ModelKeySpec, outside } from '../core/index.ts';
 import type { CompileReply, CompileRequest } from './compile-worker.ts';
 
 interface Pending {
@@ -67,8 +67,15 @@ async function compileOnPage(job: Pending): Promise<void> {
   }
 }
 
-/** Compiles `spec` in the compile worker (see the module comment). */
+/**
+ * Compiles `spec` in the compile worker (see the module comment). A model
+ * past the page's bound on degrees of freedom (core/limits.ts) is refused
+ * first: 500 took the page over 4 s to compile and typeset before the
+ * simulator said that 500 is above 200.
+ */
 export function compileInWorker(spec: ModelKeySpec, control: BuildControl = {}): Promise<CompiledModel> {
+  const bound = outside('dof', spec.dof, 1, MAX_DOF);
+  if (bound) return Promise.reject(new InputError(bound));
   const { signal, progress } = control;
   if (signal?.aborted) return Promise.reject(new DOMException('the model build was cancelled', 'AbortError'));
   if (worker === undefined) worker = startWorker();

@@ -18,6 +18,7 @@
 import { PAGE_DATA_ATTRIBUTE, pageContext } from '../book/page-data.ts';
 import { createLibrary, prefetchWidgets } from '../library.ts';
 import { createBuiltins } from './builtins.ts';
+import { pageLoopGuard } from './cell-definition.ts';
 import { blockedMessage, cellOfSource, recentCell, stackOf } from './cell-errors.ts';
 import type { LiveCell } from './cell.ts';
 import { ChapterCells } from './chapter.ts';
@@ -32,6 +33,8 @@ import { EditStore } from './storage.ts';
 import { isShareFragment } from './share-fragment.ts';
 import type { SharedView } from './share-ui.ts';
 import { CellView } from './cell-view.ts';
+import { loadFailure } from './load-failure.ts';
+import type { Sandbox } from './sandbox/index.ts';
 
 function markReady(): void {
   document.body.dataset.cellsReady = '';
@@ -102,14 +105,25 @@ function passWidgetInputs(root: HTMLElement, cells: readonly LiveCell[]): void {
  */
 const loadShare = () => import('./share-ui.ts');
 
+/** Says in the share panel under the title that sharing could not start, and why. */
+function showShareUnavailable(what: string): void {
+  const panel = document.querySelector<HTMLElement>('[data-share-edits] [data-share-panel]');
+  if (!panel) return;
+  const line = document.createElement('p');
+  line.setAttribute('role', 'alert');
+  line.textContent = loadFailure(what).message;
+  panel.replaceChildren(line);
+  panel.hidden = false;
+}
+
 /** The shared link's edits for this chapter (share-ui.ts), or null: the chapter then starts as without the link. */
 async function openSharedLink(root: HTMLElement): Promise<SharedView | null> {
   let share: Awaited<ReturnType<typeof loadShare>>;
   try {
     share = await loadShare();
-  } catch (error) {
-    // The share code could not load (offline, say).
-    console.error(error);
+  } catch {
+    // The share code could not load (offline, say): the chapter opens without the link, and says so.
+    showShareUnavailable('The shared link’s edits could not be shown, since the code that opens them');
     return null;
   }
   try {
@@ -125,7 +139,28 @@ async function openSharedLink(root: HTMLElement): Promise<SharedView | null> {
 /** Wires the Share button under the chapter's title (src/components/ShareEdits.astro). */
 function wireShareButton(chapter: ChapterCells): void {
   const trigger = document.querySelector<HTMLButtonElement>('[data-share-edits] [data-share-button]');
-  trigger?.addEventListener('click', () => void loadShare().then((m) => m.shareEdits(chapter)));
+  trigger?.addEventListener('click', () => void loadShare().then((m) => m.shareEdits(chapter), () => showShareUnavailable('Sharing')));
+}
+
+/**
+ * The sandbox (sandbox/index.ts): loaded, in a chunk of its own, and
+ * installed when the first code that is not the chapter's is about to run.
+ * `ready` is null until then: nothing to undo before.
+ */
+function pageSandbox(store: EditStore, cells: () => readonly LiveCell[]) {
+  let loading: Promise<Sandbox> | null = null;
+  const sandbox = {
+    ready: null as Sandbox | null,
+    load: (): Promise<Sandbox> =>
+      (loading ??= import('./sandbox/index.ts').then(
+        (m) => (sandbox.ready = m.installSandbox(store, cells)),
+        () => {
+          loading = null;
+          throw loadFailure('The guard that edited code runs in');
+        },
+      )),
+  };
+  return sandbox;
 }
 
 function boot(): void {
@@ -152,12 +187,19 @@ async function start(root: HTMLElement, shared: SharedView | null): Promise<void
   const notebook = new Notebook(createBuiltins(root, createLibrary(page, currentCellSignal)));
   const math = new MathSnapshot();
   const scheduler = new CellScheduler(markReady, markComplete, (cell) => prefetchWidgets(cell.root));
+  const sandbox = pageSandbox(store, () => chapter.cells);
   const chapter: ChapterCells = new ChapterCells(root, store, notebook, scheduler, {
     downloadEdits: () => void downloadEdits(chapter.cells),
     checkPage: () => ({ restored: math.restore(), intact: pageIntact(root) }),
     // The notice loads then; whatever the cell left of the page, a module still loads.
     pageBroken: (label) => void import('./recovery.ts').then((m) => m.showPageBroken(label)),
+    readerScope: () => sandbox.load().then((s) => s.scope),
+    // Without the sandbox the edit cannot run anyway: applying it says why.
+    holdSaved: (cell) => sandbox.load().then((s) => s.holdSaved(cell), () => false),
+    redefining: (id) => sandbox.ready?.redefining(id),
   });
+  // A loop the guard stopped is said under its cell; one whose loops keep being stopped loses its timers.
+  pageLoopGuard.onStop((stop) => chapter.cells.find((c) => c.id === stop.cell)?.loopStopped(stop, sandbox.ready?.loopStopped(stop.cell) ?? null));
   await chapter.build();
   const { cells } = chapter;
   wireShareButton(chapter);

@@ -17,6 +17,7 @@
  */
 import { standardValues } from './globals.ts';
 import { html } from './html.ts';
+import { explainLoadFailure } from './load-failure.ts';
 import { observeNow, observeWidth } from './observe.ts';
 
 /** How the runtime wants a builtin: a function it calls for the value. */
@@ -30,10 +31,18 @@ export function plainDefinition(value: unknown): BuiltinDefinition {
   return () => value;
 }
 
-/** A definition that calls `load` the first time the runtime asks, and hands every later cell the same promise. */
-export function loadedDefinition(load: () => Promise<unknown>): BuiltinDefinition {
+/**
+ * A definition that calls `load` the first time the runtime asks, and hands
+ * every later cell the same promise. A load that fails (offline) says so in
+ * the reader's words, and is tried again when a cell next asks.
+ */
+export function loadedDefinition(load: () => Promise<unknown>, name = 'part'): BuiltinDefinition {
   let loading: Promise<unknown> | null = null;
-  return () => (loading ??= load());
+  return () =>
+    (loading ??= load().catch((error: unknown) => {
+      loading = null;
+      throw explainLoadFailure(error, `The book's ${name}`);
+    }));
 }
 
 /**
@@ -43,7 +52,7 @@ export function loadedDefinition(load: () => Promise<unknown>): BuiltinDefinitio
 export function createBuiltins(root: Element, catalogue: Loaders): Record<string, BuiltinDefinition> {
   const definitions: Record<string, BuiltinDefinition> = {};
   for (const [name, value] of Object.entries({ ...standardValues(), html })) definitions[name] = plainDefinition(value);
-  for (const [name, load] of Object.entries(catalogue)) definitions[name] = loadedDefinition(load);
+  for (const [name, load] of Object.entries(catalogue)) definitions[name] = loadedDefinition(load, name);
   definitions.width = () => observeWidth(root);
   definitions.now = () => observeNow();
   return definitions;

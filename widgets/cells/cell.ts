@@ -12,7 +12,7 @@
  *   still running when the page last died, or one another tab saved since,
  *   is offered, never applied silently.
  */
-import { compileCell } from './cell-definition.ts';
+import { compileCell, type CellScope } from './cell-definition.ts';
 import { DraftKeeper, type SaveProblem } from './drafts.ts';
 import type { CellEditor } from './editor.ts';
 import { loadEditor, loadParser } from './lazy.ts';
@@ -20,6 +20,8 @@ import type { CellVariable, Notebook } from './runtime.ts';
 import { formatError, type CellSpec } from './spec.ts';
 import type { EditStore, SavedEdit } from './storage.ts';
 import type { CellView } from './cell-view.ts';
+import type { LoopStopped } from './loop-guard.ts';
+import type { HeldCell } from './sandbox/reload-notice.ts';
 
 /** A key that edits text (a character, Enter, Backspace, Delete, Tab), not a shortcut or a move. */
 function isTyping(event: KeyboardEvent): boolean {
@@ -46,6 +48,15 @@ export interface CellHooks {
   addCellAfter(): void;
   /** The reader deleted this cell (one they had added). */
   deleteCell(): void;
+  /**
+   * Readies the page for code that is not the chapter's own (sandbox/index.ts):
+   * the names that code sees in place of some of the page's globals.
+   */
+  readerScope(): Promise<CellScope>;
+  /** A saved edit is about to run as the page loads: true when it must be shown and not run (the page reloads itself in a loop). */
+  holdSaved(cell: HeldCell): Promise<boolean>;
+  /** Cell `id` is about to be defined again (or deleted): what its old code set going goes with it. */
+  redefining(id: string): void;
 }
 
 /** After the reader's code has shown a result, the page must stay responsive this long to count as having survived it. */
@@ -53,7 +64,7 @@ const SURVIVAL_MS = 1000;
 /** …or this long without a result (a cell may wait on a promise for ever without freezing anything). */
 const SURVIVAL_WITHOUT_RESULT_MS = 10_000;
 
-export class LiveCell {
+export class LiveCell implements HeldCell {
   readonly #view: CellView;
   readonly #notebook: Notebook;
   readonly #drafts: DraftKeeper;
@@ -73,6 +84,11 @@ export class LiveCell {
   #editorLoading: Promise<void> | null = null;
   /** Keys typed into the static code while the editor loads, replayed into it once mounted. */
   #typedAhead: string[] = [];
+  /** The saved edit held back because the page reloads itself in a loop (see {@link runHeld}). */
+  #held: string | null = null;
+  /** What the running definition failed with, and the line shown for code of the cell that failed later. */
+  #runtimeError: string | null = null;
+  #laterError: string | null = null;
 
   constructor(view: CellView, notebook: Notebook, store: EditStore, hooks: CellHooks) {
     this.#view = view;
@@ -86,6 +102,7 @@ export class LiveCell {
       pending: () => view.setState('pending'),
       fulfilled: (value, name) => {
         view.setState('fulfilled');
+        this.#runtimeError = null;
         view.setError('runtime', null);
         view.showValue(value, name);
         this.#firstResult();
@@ -94,7 +111,10 @@ export class LiveCell {
       rejected: (error, name) => {
         view.setState('rejected');
         view.clearOutput();
-        view.setError('runtime', notebook.describeFailure(error, name));
+        this.#runtimeError = notebook.describeFailure(error, name);
+        view.setError('runtime', this.#runtimeError);
+        // A stopped loop is said once: as the cell's failure, when it failed with it.
+        if (this.#laterError === this.#runtimeError) this.#setLaterError(null);
         this.#firstResult();
         this.#resulted();
       },
@@ -136,11 +156,16 @@ export class LiveCell {
     const starting = this.#drafts.starting();
     if (starting.kind === 'run') {
       this.#showDraft(starting.draft);
-      if (await this.#apply(starting.ran)) return;
+      // The edit needs the parser as well as the sandbox: both are fetched at once.
+      void loadParser().catch(() => undefined);
+      if (await this.#hooks.holdSaved(this)) this.#held = starting.ran;
+      else if (await this.#apply(starting.ran)) return;
     } else if (starting.kind === 'draft') {
       this.#showDraft(starting.draft);
     } else if (starting.kind === 'offer') {
       this.#offer(starting.edit, starting.why);
+    } else if (starting.kind === 'damaged') {
+      this.#offerDamaged(starting.raw);
     }
     this.#defineOriginal();
   }
@@ -148,6 +173,7 @@ export class LiveCell {
   /** Runs what the reader sees now (Run button, Shift+Enter). */
   async run(): Promise<void> {
     this.#started = true;
+    this.#held = null;
     const source = this.#editor?.source ?? this.#draft;
     this.#draft = source;
     this.#view.setBusy(true);
@@ -177,6 +203,7 @@ export class LiveCell {
   /** Takes the cell off the page: its definition, its markup and what was saved of it. */
   dispose(): void {
     if (this.#survival) clearTimeout(this.#survival.timer);
+    this.#hooks.redefining(this.id);
     this.#drafts.survived();
     this.#drafts.forget();
     this.#notebook.remove(this.#variable);
@@ -215,6 +242,41 @@ export class LiveCell {
 
   /** Code of this cell failed after the cell gave its value: shown until the cell runs again. */
   showLaterError(message: string): void {
+    this.#setLaterError(message);
+  }
+
+  /**
+   * A loop of this cell's code was stopped (loop-guard.ts). Said under the
+   * cell unless its definition fails with it anyway; when its loops kept
+   * being stopped and its timers and listeners were cleared (`cleared` says
+   * so, sandbox/index.ts), that is said too, and the edit is offered rather
+   * than run on the next load.
+   */
+  loopStopped(stop: LoopStopped, cleared: string | null): void {
+    const message = `${formatError(stop)}${cleared ? `; ${cleared}` : ''}`;
+    if (message !== this.#runtimeError) this.#setLaterError(message);
+    if (cleared && this.#running !== this.#view.originalSource) {
+      if (this.#survival) clearTimeout(this.#survival.timer);
+      this.#survival = null;
+      this.#drafts.markRunning();
+    }
+  }
+
+  /** Runs the saved edit that was held back (the reader chose **Run my edits**). */
+  runHeld(): void {
+    const held = this.#held;
+    this.#held = null;
+    if (held !== null) void this.#apply(held);
+  }
+
+  /** Keeps the held edit as text not run, on this load and the next (the reader chose **Keep them off**). */
+  keepHeldOff(): void {
+    this.#held = null;
+    this.#drafts.unrun(this.#editor?.source ?? this.#draft);
+  }
+
+  #setLaterError(message: string | null): void {
+    this.#laterError = message;
     this.#view.setError('later', message);
   }
 
@@ -301,12 +363,16 @@ export class LiveCell {
     let spec: CellSpec;
     try {
       const original = this.#view.originalSpec;
-      spec = source === this.#view.originalSource && original ? original : (await loadParser()).parseSource(source);
-      const definition = compileCell(source, spec, this.#view.id);
+      const isOriginal = source === this.#view.originalSource && original !== null;
+      spec = isOriginal && original ? original : (await loadParser()).parseSource(source);
+      // Code that is not the chapter's runs in the sandbox, which must be in place first.
+      const scope = isOriginal ? undefined : await this.#hooks.readerScope();
+      const definition = compileCell(source, spec, this.#view.id, undefined, scope);
       this.#view.setError('compile', null);
       this.#hooks.onDefine(spec);
       if (source !== this.#view.originalSource) this.#watchSurvival();
-      this.#view.setError('later', null);
+      this.#setLaterError(null);
+      this.#hooks.redefining(this.id);
       this.#notebook.define(this.#variable, spec, definition);
       this.#running = source;
       this.#inputs = spec.inputs;
@@ -326,7 +392,8 @@ export class LiveCell {
       if (!spec) throw new SyntaxError(this.#view.buildError?.replace(/^SyntaxError: /, '') ?? 'this cell could not be parsed');
       const definition = compileCell(this.#view.originalSource, spec, this.#view.id);
       this.#hooks.onDefine(spec);
-      this.#view.setError('later', null);
+      this.#setLaterError(null);
+      this.#hooks.redefining(this.id);
       this.#notebook.define(this.#variable, spec, definition);
       this.#running = this.#view.originalSource;
       this.#inputs = spec.inputs;
@@ -371,6 +438,17 @@ export class LiveCell {
       { label: 'Restore my edit', run: () => this.#takeEdit(text, true) },
       { label: 'Discard', run: () => this.#discardOffer() },
     ]);
+  }
+
+  /** An edit the browser's storage gave back damaged (`raw`): what can be recovered of it is offered, never run. */
+  #offerDamaged(raw: string): void {
+    const offer = (text: string) =>
+      this.#view.showNotice('Your saved edit of this cell came back damaged from the browser’s storage, so the original runs. What could be recovered of it is kept for you:', [
+        { label: 'Edit it', run: () => this.#takeEdit(text, false) },
+        { label: 'Discard', run: () => this.#closeOffer() },
+      ]);
+    // Offline, the raw text is still the reader's.
+    void import('./recovery.ts').then((m) => offer(m.recoverText(raw)), () => offer(raw));
   }
 
   /** The reader takes an offered edit: into the editor, and run it or not. */
@@ -466,3 +544,4 @@ export class LiveCell {
     this.#hooks.onFirstResult();
   }
 }
+

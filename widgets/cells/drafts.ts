@@ -25,7 +25,9 @@ export type StartingEdit =
   /** The original runs; the editor shows the reader's unrun draft. */
   | { readonly kind: 'draft'; readonly draft: string }
   /** The original runs; the edit waits for the reader: the chapter changed, or the edit stopped the page. */
-  | { readonly kind: 'offer'; readonly edit: SavedEdit; readonly why: 'changed' | 'stopped' };
+  | { readonly kind: 'offer'; readonly edit: SavedEdit; readonly why: 'changed' | 'stopped' }
+  /** The original runs; the saved edit could not be read back (`raw`, as stored), and what can be recovered of it is offered (recovery.ts). */
+  | { readonly kind: 'damaged'; readonly raw: string };
 
 /** What the cell hears when a save did not take. */
 export type SaveProblem = { readonly reason: Exclude<SaveFailure, 'conflict'> } | { readonly reason: 'conflict'; readonly theirs: SavedEdit };
@@ -57,7 +59,10 @@ export class DraftKeeper {
   starting(): StartingEdit {
     const saved = this.#store.load(this.#cellId);
     this.#known = saved?.savedAt ?? null;
-    if (!saved) return { kind: 'original' };
+    if (!saved) {
+      const damaged = this.#store.damaged(this.#cellId);
+      return damaged === null ? { kind: 'original' } : { kind: 'damaged', raw: damaged };
+    }
     const stopped = this.#store.wasRunning(this.#cellId);
     if (stopped || saved.base !== this.#hash) {
       if (!stopped && saved.draft === this.#original && saved.ran === null) return { kind: 'original' };
@@ -79,6 +84,7 @@ export class DraftKeeper {
   closeOffer(): void {
     this.#offer = null;
     this.#store.clearRunning(this.#cellId);
+    this.#store.forgetDamaged(this.#cellId);
   }
 
   /** The reader typed: save the draft soon, unless an offer is pending (then the reader decides). */
@@ -110,6 +116,14 @@ export class DraftKeeper {
   adopt(edit: SavedEdit): void {
     this.#known = edit.savedAt;
     this.#ran = edit.ran;
+  }
+
+  /** Keeps `draft` as text not run: the original runs, on this load and the next (an edit held back from a reload loop). */
+  unrun(draft: string): void {
+    clearTimeout(this.#timer);
+    this.#pending = null;
+    this.#ran = null;
+    this.#save(draft, null);
   }
 
   /** Overwrites whatever is stored with this tab's text (the reader chose to keep theirs). */

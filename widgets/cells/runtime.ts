@@ -5,6 +5,7 @@
 import { Runtime, RuntimeError, type Module, type Observer, type Variable } from '@observablehq/runtime';
 import type { BuiltinDefinition } from './builtins.ts';
 import type { CellDefinition } from './cell-definition.ts';
+import { explainLoadFailure } from './load-failure.ts';
 import { formatError, type CellSpec } from './spec.ts';
 
 export type { Observer as CellObserver, Variable as CellVariable };
@@ -116,7 +117,8 @@ export class Notebook {
     if (error instanceof RuntimeError && error.input && error.input !== name && this.isCell(error.input)) {
       return `RuntimeError: input ${error.input} failed: ${error.message}`;
     }
-    return formatError(error);
+    // A widget that loads more of its code as it goes (a view, a worker's page side) may meet a lost connection too.
+    return formatError(explainLoadFailure(error, 'Part of the book this cell uses'));
   }
 
   dispose(): void {

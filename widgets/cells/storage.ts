@@ -3,8 +3,9 @@
  *
  * Keys: `phasebook:v2:<secret>:<page>:edit:<cell id>` holds a {@link SavedEdit}
  * as JSON, `…:running:<cell id>` marks a cell whose reader's code has been
- * started but has not yet shown that the page survived it, and
- * `phasebook:v2:secret` holds the secret.
+ * started but has not yet shown that the page survived it, `…:damaged:<cell id>`
+ * keeps an edit that could not be read back until the reader has seen it,
+ * and `phasebook:v2:secret` holds the secret.
  *
  * - `<page>` is the chapter's path, base path included (`/phasebook/kepler/`),
  *   so two books on one origin (GitHub Pages project sites share one) never
@@ -16,6 +17,14 @@
  *
  * Storage can be missing, full or forbidden (private modes, disabled
  * cookies): no call here throws, and every write says whether it took.
+ *
+ * Storage can also come back damaged (a disk error, an extension, a hand
+ * in the developer tools). Nothing of the reader's is then dropped without
+ * a word: an edit that no longer parses is set aside, with what of its
+ * text can be recovered, and a damaged or missing secret, which would
+ * orphan every edit saved under it, sets this page's orphaned edits aside
+ * too. Set-aside text is offered to the reader (cell.ts), never run: an
+ * orphan cannot prove this book wrote it.
  */
 
 /** An edit of one cell, as stored. */
@@ -81,15 +90,18 @@ function isQuotaError(error: unknown): boolean {
 export class EditStore {
   readonly #storage: Storage | null;
   readonly #prefix: string | null;
+  readonly #page: string;
   /** This page load's id, written into every edit it saves. */
   readonly tab: string;
 
   /** `page` is the chapter's path, e.g. `location.pathname`. */
   constructor(page: string, storage: Storage | null = defaultStorage(), tab: string = randomId()) {
     this.#storage = storage;
+    this.#page = page;
     this.tab = tab;
-    const secret = this.#secret();
+    const { secret, drawn } = this.#secret();
     this.#prefix = secret ? `${VERSION}:${secret}:${page}` : null;
+    if (drawn) this.#setAsideOrphans();
   }
 
   /** False when nothing can be kept (no storage, forbidden, or it would not keep the secret). */
@@ -102,8 +114,23 @@ export class EditStore {
     return this.#prefix && `${this.#prefix}:edit:${cellId}`;
   }
 
+  /** The cell's edit; one that cannot be read back is set aside (see {@link damaged}) and null returned. */
   load(cellId: string): SavedEdit | null {
-    return this.#parse(this.#get(this.editKey(cellId)));
+    const key = this.editKey(cellId);
+    const raw = this.#get(key);
+    const edit = this.#parse(raw);
+    if (raw && !edit && key) this.#setAside(cellId, raw, key);
+    return edit;
+  }
+
+  /** This cell's edit as stored when it was set aside because it could not be read back (recovery.ts reads what it can of it), or null. */
+  damaged(cellId: string): string | null {
+    return this.#get(this.#prefix && `${this.#prefix}:damaged:${cellId}`);
+  }
+
+  /** The reader has seen the set-aside edit (taken into the editor, or discarded). */
+  forgetDamaged(cellId: string): void {
+    this.#remove(this.#prefix && `${this.#prefix}:damaged:${cellId}`);
   }
 
   /**
@@ -195,17 +222,53 @@ export class EditStore {
     return this.#parse(value);
   }
 
-  /** The browser's secret for this book: read, or drawn and kept; null when storage cannot keep it. */
-  #secret(): string | null {
+  /** The browser's secret for this book: read, or drawn and kept (`drawn`); null when storage cannot keep it. */
+  #secret(): { secret: string | null; drawn: boolean } {
     const existing = this.#get(SECRET_KEY);
-    if (existing && /^[0-9a-f]{32}$/.test(existing)) return existing;
-    if (!this.#storage) return null;
+    if (existing && /^[0-9a-f]{32}$/.test(existing)) return { secret: existing, drawn: false };
+    if (!this.#storage) return { secret: null, drawn: false };
     const secret = randomId();
     try {
       this.#storage.setItem(SECRET_KEY, secret);
-      return this.#storage.getItem(SECRET_KEY) === secret ? secret : null;
+      return this.#storage.getItem(SECRET_KEY) === secret ? { secret, drawn: true } : { secret: null, drawn: false };
     } catch {
-      return null;
+      return { secret: null, drawn: false };
+    }
+  }
+
+  /**
+   * Edits of this page saved under another secret: after the secret was
+   * damaged or lost, these are the reader's own, out of reach. Each cell's
+   * latest is set aside under the new secret, to be offered, not run.
+   */
+  #setAsideOrphans(): void {
+    if (!this.#storage || !this.#prefix) return;
+    const suffix = `:${this.#page}:edit:`;
+    const latest = new Map<string, { raw: string; savedAt: number }>();
+    try {
+      for (let i = 0; i < this.#storage.length; i++) {
+        const key = this.#storage.key(i);
+        const match = key && /^phasebook:v2:([^:]*)(:.*)$/.exec(key);
+        if (!key || !match || !match[2].startsWith(suffix) || key.startsWith(`${this.#prefix}:`)) continue;
+        const raw = this.#storage.getItem(key) ?? '';
+        const savedAt = this.#parse(raw)?.savedAt ?? 0;
+        const cellId = match[2].slice(suffix.length);
+        if ((latest.get(cellId)?.savedAt ?? -1) < savedAt) latest.set(cellId, { raw, savedAt });
+      }
+    } catch {
+      return;
+    }
+    for (const [cellId, { raw }] of latest) this.#setAside(cellId, raw, null);
+  }
+
+  /** Keeps `raw` aside for the reader (unless something is aside already), and takes it from `from`. */
+  #setAside(cellId: string, raw: string, from: string | null): void {
+    const aside = `${this.#prefix}:damaged:${cellId}`;
+    try {
+      if (this.#storage?.getItem(aside) === null) this.#storage.setItem(aside, raw);
+      if (from) this.#storage?.removeItem(from);
+    } catch {
+      // Storage full or gone: the damaged value stays where it is, and is read (and set aside) again next time.
     }
   }
 

@@ -17,6 +17,16 @@ describe('builtin definitions', () => {
     expect(load).toHaveBeenCalledTimes(1);
   });
 
+  test('a load that fails for a lost connection says so, and is tried again when next asked', async () => {
+    const load = vi.fn(async () => {
+      throw new TypeError('Failed to fetch dynamically imported module: https://book.test/_astro/table.js');
+    });
+    const definition = loadedDefinition(load, 'table');
+    await expect(definition()).rejects.toThrow(/^The book's table could not be loaded: the connection to the book's site seems to be lost.*Reload the page when you are back online/);
+    await expect(definition()).rejects.toThrow(/could not be loaded/);
+    expect(load).toHaveBeenCalledTimes(2);
+  });
+
   test('a catalogue entry wins over a standard builtin of the same name, and loads only when asked', async () => {
     const load = vi.fn(async () => 'the book’s html');
     const builtins = createBuiltins({} as Element, { html: load });

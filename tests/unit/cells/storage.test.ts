@@ -1,4 +1,5 @@
 import { describe, expect, test } from 'vitest';
+import { recoverText } from '../../../widgets/cells/recovery.ts';
 import { EditStore } from '../../../widgets/cells/storage.ts';
 
 /** An in-memory Storage; `fail` makes writes (or every call) throw as a full or forbidden localStorage does. */
@@ -86,13 +87,36 @@ describe('EditStore(page, storage, tab)', () => {
     expect(store.all().map(({ cellId }) => cellId).sort()).toEqual(['a', 'b']);
   });
 
-  test('ignores corrupt or foreign values', () => {
+  test('an edit that cannot be read back is not run, but set aside with the text that can be recovered', () => {
     const storage = memoryStorage();
     const store = new EditStore('/c/', storage);
-    storage.setItem(store.editKey('a')!, '{not json');
+    const whole = JSON.stringify({ draft: 'a = 2', ran: 'a = "two"\nb', base: 'h', savedAt: 1, tab: 't' });
+    storage.setItem(store.editKey('a')!, whole.slice(0, whole.indexOf('b"') + 1));
     storage.setItem(store.editKey('b')!, JSON.stringify({ draft: 1 }));
     expect(store.load('a')).toBeNull();
     expect(store.load('b')).toBeNull();
+    expect(recoverText(store.damaged('a')!)).toBe('a = "two"\nb');
+    expect(recoverText(store.damaged('b')!)).toBe('{"draft":1}');
+    // Set aside, the edit's own key is free for the reader's next save, and what is aside stays until they have seen it.
+    expect(store.save('a', edit('a = 3'), null).ok).toBe(true);
+    expect(recoverText(new EditStore('/c/', storage).damaged('a')!)).toBe('a = "two"\nb');
+    store.forgetDamaged('a');
+    expect(store.damaged('a')).toBeNull();
+  });
+
+  test('a damaged secret orphans no edit: this page’s edits under the old secret are set aside, to be offered', () => {
+    const storage = memoryStorage();
+    const before = new EditStore('/c/', storage);
+    before.save('a', edit('a = 1'), null);
+    new EditStore('/other/', storage).save('a', edit('a = 9'), null);
+    storage.setItem('phasebook:v2:secret', storage.getItem('phasebook:v2:secret')!.slice(0, 20));
+    const after = new EditStore('/c/', storage);
+    expect(after.editKey('a')).not.toBe(before.editKey('a'));
+    expect(after.load('a')).toBeNull();
+    expect(recoverText(after.damaged('a')!)).toBe('a = 1');
+    expect(after.damaged('b')).toBeNull();
+    // Only when the secret had to be drawn again: with the secret intact, keys under others stay unread (planted ones).
+    expect(new EditStore('/other/', storage).damaged('a')).toBeNull();
   });
 
   test('says why a write did not take: full, or no storage at all; nothing throws', () => {

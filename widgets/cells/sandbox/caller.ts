@@ -32,11 +32,11 @@ type V8Error = ErrorConstructor & { stackTraceLimit?: number; prepareStackTrace?
  * a stack trace, which keeps this cheap enough for every setTimeout the
  * page makes; other engines' stack text is read line by line.
  */
-function frames(): string[] {
+function frames(depth: number): string[] {
   const E = Error as V8Error;
   const { stackTraceLimit: limit, prepareStackTrace: prepare } = E;
-  // V8 keeps 10 frames by default (and a cell may have set fewer); the cell may be further out.
-  E.stackTraceLimit = 40;
+  // As many frames as asked, whatever a cell has set the limit to: each frame taken costs time.
+  E.stackTraceLimit = depth;
   E.prepareStackTrace = (_, sites) => sites;
   let stack: unknown;
   try {
@@ -61,7 +61,8 @@ function isNative(frame: string): boolean {
  * is `f` called by the cell that called `map`.
  */
 export function callerCell(): string | null {
-  for (const frame of frames()) {
+  // The sandbox's own frames, a built-in or two, then the caller: a dozen is plenty, and cheap.
+  for (const frame of frames(12)) {
     const cell = cellOfSource(frame);
     if (cell !== null) return cell;
     if (frame.includes(OWN) || isNative(frame)) continue;
@@ -76,7 +77,8 @@ export function callerCell(): string | null {
  * cell that did it through the book's code did it all the same.
  */
 export function cellOnStack(): string | null {
-  for (const frame of frames()) {
+  // Asked rarely (a navigation, a window, a dialog), and the cell may be far out.
+  for (const frame of frames(40)) {
     const cell = cellOfSource(frame);
     if (cell !== null) return cell;
   }
