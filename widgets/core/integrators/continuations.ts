@@ -16,52 +16,47 @@ export interface Resumable {
   sample: Float64Array;
 }
 
-export class Continuations<C extends Resumable> {
-  private readonly kept = new Map<string, C[]>();
-  private count = 0;
-
-  /** `capacity`: continuations kept, at least; enough for a worker's batch. */
-  constructor(
-    private readonly dim: number,
-    private readonly capacity: number,
-  ) {}
-
+export interface Continuations<C extends Resumable> {
   /** Takes out the continuation that left x[o…o+dim) as sample k of t0 + k·dt, if one is kept. */
-  take(x: Float64Array, o: number, t0: number, dt: number, k: number): C | undefined {
-    const key = this.keyOf(t0, dt, k, x, o);
-    const list = this.kept.get(key);
+  take(x: Float64Array, o: number, t0: number, dt: number, k: number): C | undefined;
+  /** Keeps c, which has just written x[o…o+dim) as its sample c.k; beyond `capacity`, the oldest go. */
+  keep(c: C, x: Float64Array, o: number): void;
+}
+
+/** A store of at least `capacity` continuations of states of `dim` components (enough for a worker's batch). */
+export function continuations<C extends Resumable>(dim: number, capacity: number): Continuations<C> {
+  const kept = new Map<string, C[]>();
+  let count = 0;
+  // The sample grid, the sample number and the state's first and last components: few states share one.
+  const keyOf = (t0: number, dt: number, k: number, x: Float64Array, o: number) => `${t0}|${dt}|${k}|${x[o]}|${x[o + dim - 1]}`;
+
+  function take(x: Float64Array, o: number, t0: number, dt: number, k: number): C | undefined {
+    const key = keyOf(t0, dt, k, x, o);
+    const list = kept.get(key);
     if (!list) return undefined;
     const at = list.findIndex((c) => c.sample.every((v, i) => v === x[o + i]));
     if (at < 0) return undefined;
     const [c] = list.splice(at, 1);
-    if (list.length === 0) this.kept.delete(key);
-    this.count--;
+    if (list.length === 0) kept.delete(key);
+    count--;
     return c;
   }
 
-  /** Keeps c, which has just written x[o…o+dim) as its sample c.k. */
-  keep(c: C, x: Float64Array, o: number): void {
-    c.sample.set(x.subarray(o, o + this.dim));
-    const key = this.keyOf(c.t0, c.dt, c.k, x, o);
-    const list = this.kept.get(key);
+  function keep(c: C, x: Float64Array, o: number): void {
+    c.sample.set(x.subarray(o, o + dim));
+    const key = keyOf(c.t0, c.dt, c.k, x, o);
+    const list = kept.get(key);
     if (list) list.push(c);
-    else this.kept.set(key, [c]);
-    this.count++;
-    this.dropOldest();
-  }
-
-  /** The oldest go first: a trajectory not continued for this long has been restarted or dropped. */
-  private dropOldest(): void {
-    while (this.count > this.capacity) {
-      const [oldest, entries] = this.kept.entries().next().value as [string, C[]];
+    else kept.set(key, [c]);
+    count++;
+    // The oldest go first: a trajectory not continued for this long has been restarted or dropped.
+    while (count > capacity) {
+      const [oldest, entries] = kept.entries().next().value as [string, C[]];
       entries.shift();
-      if (entries.length === 0) this.kept.delete(oldest);
-      this.count--;
+      if (entries.length === 0) kept.delete(oldest);
+      count--;
     }
   }
 
-  /** The sample grid, the sample number and the state's first and last components: few states share one. */
-  private keyOf(t0: number, dt: number, k: number, x: Float64Array, o: number): string {
-    return `${t0}|${dt}|${k}|${x[o]}|${x[o + this.dim - 1]}`;
-  }
+  return { take, keep };
 }

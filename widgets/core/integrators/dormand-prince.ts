@@ -19,7 +19,7 @@
  * not a step: the method picks its own steps.
  */
 import type { Stepper, VectorField } from '../types.ts';
-import { Continuations } from './continuations.ts';
+import { continuations } from './continuations.ts';
 import { acceptedStep, type AdaptiveStats, type Continuation, denseSample, newStages, type Stages, startContinuation, type Tolerances } from './dormand-prince-step.ts';
 
 export type { AdaptiveStats, Tolerances } from './dormand-prince-step.ts';
@@ -35,7 +35,7 @@ const KEPT = 1024;
  */
 export function dormandPrince(field: VectorField, dim: number, tolerances: Tolerances): Stepper & { stats: AdaptiveStats } {
   const stages = newStages(field, dim, tolerances);
-  const kept = new Continuations<Continuation>(dim, KEPT);
+  const kept = continuations<Continuation>(dim, KEPT);
 
   function advance(x: Float64Array, count: number, _params: Float64Array, t0: number, k0: number, dt: number, steps: number): number {
     for (let m = 0; m < count; m++) {
