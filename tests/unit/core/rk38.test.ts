@@ -42,7 +42,7 @@ describe('rk38 on closed-form motions', () => {
     expect(v[0]).toBeLessThan(1);
   });
 
-  it('rk38(field, dim) is fourth order: halving dt divides the error by about 16', async () => {
+  it('the fused RK 3/8 stepper of an expression model is fourth order: halving dt divides the error by about 16', async () => {
     // The harmonic oscillator to t = 10 against cos t, at steps large enough for truncation to dominate rounding.
     const model = await canonicalEquations({ dof: 1, hamiltonian: 'p^2/2 + q^2/2' });
     const errorAt = (dt: number) => {
