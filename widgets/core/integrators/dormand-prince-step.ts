@@ -85,7 +85,9 @@ export function newStages(field: VectorField, dim: number, { rtol, atol }: Toler
 /** The field at (t, y) into `out`, counted. */
 function evaluate(s: Stages, t: number, y: Float64Array, out: Float64Array): void {
   s.stats.evaluations++;
-  s.field(t, y, out);
+  // Called as a plain function, as before: a reader's vector field sees no `this`.
+  const field = s.field;
+  field(t, y, out);
 }
 
 /** The weighted RMS norm of `v` against the scale of y and z (HNW §II.4, eq. 4.11): 1 is the tolerance. */
@@ -222,9 +224,8 @@ function shrinkFactor(error: number): number {
   return Number.isFinite(error) ? Math.max(SHRINK_MOST, SAFETY * Math.pow(error, -1 / 5)) : SHRINK_MOST;
 }
 
-/** The state at time T in the last accepted step's interval, from its dense output, into x at offset o. */
-export function denseSample(c: Continuation, T: number, x: Float64Array, o: number): void {
-  const dim = c.y.length;
+/** The state (dim components) at time T in the last accepted step's interval, from its dense output, into x at offset o. */
+export function denseSample(c: Continuation, T: number, x: Float64Array, o: number, dim: number): void {
   if (T === c.t) {
     // The step's end is the state itself, not the interpolant's rounding of it.
     for (let i = 0; i < dim; i++) x[o + i] = c.y[i];

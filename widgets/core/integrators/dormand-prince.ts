@@ -20,7 +20,7 @@
  */
 import type { Stepper, VectorField } from '../types.ts';
 import { continuations } from './continuations.ts';
-import { acceptedStep, type AdaptiveStats, type Continuation, denseSample, newStages, type Stages, startContinuation, type Tolerances } from './dormand-prince-step.ts';
+import { acceptedStep, type AdaptiveStats, type Continuation, denseSample, newStages, startContinuation, type Tolerances } from './dormand-prince-step.ts';
 
 export type { AdaptiveStats, Tolerances } from './dormand-prince-step.ts';
 
@@ -31,19 +31,27 @@ const KEPT = 1024;
  * The adaptive stepper of `field`: each trajectory's internal step is
  * continued from the last call that reached the same sample (continuations.ts),
  * or started afresh, and stepped (dormand-prince-step.ts) past each sample
- * time, which is read from that step's dense output.
+ * time t0 + k·dt, which is read from that step's dense output.
  */
 export function dormandPrince(field: VectorField, dim: number, tolerances: Tolerances): Stepper & { stats: AdaptiveStats } {
   const stages = newStages(field, dim, tolerances);
   const kept = continuations<Continuation>(dim, KEPT);
 
+  // The sample loop stays in this closure, where V8 may treat dim as a constant when it optimises
+  // (one stepper in the process): in a function of its own the bench's 1-DOF model ran about 5 % slower.
   function advance(x: Float64Array, count: number, _params: Float64Array, t0: number, k0: number, dt: number, steps: number): number {
     for (let m = 0; m < count; m++) {
       const o = m * dim;
       const c = kept.take(x, o, t0, dt, k0) ?? startContinuation(stages, x, o, t0, dt, k0);
-      const done = sampleRun(stages, c, x, o, t0, k0, dt, steps);
-      // A trajectory that left the finite numbers is not continued.
-      if (done < steps) return done;
+      for (let k = 0; k < steps; k++) {
+        const T = t0 + (k0 + k + 1) * dt;
+        while (c.t < T) acceptedStep(stages, c);
+        denseSample(c, T, x, o, dim);
+        let sum = 0;
+        for (let i = 0; i < dim; i++) sum += x[o + i];
+        // NaN or ±∞ anywhere makes the sum minus itself non-zero; such a trajectory is not continued.
+        if (sum - sum !== 0) return k;
+      }
       c.k = k0 + steps;
       kept.keep(c, x, o);
     }
@@ -51,23 +59,4 @@ export function dormandPrince(field: VectorField, dim: number, tolerances: Toler
   }
 
   return { dim, advance, stats: stages.stats };
-}
-
-/**
- * Writes the samples k0 + 1 … k0 + steps of t0 + k·dt into x at offset o,
- * each from the dense output of the step that spans it, taking steps as
- * they are needed; returns how many were finite.
- */
-function sampleRun(s: Stages, c: Continuation, x: Float64Array, o: number, t0: number, k0: number, dt: number, steps: number): number {
-  const { dim } = s;
-  for (let k = 0; k < steps; k++) {
-    const T = t0 + (k0 + k + 1) * dt;
-    while (c.t < T) acceptedStep(s, c);
-    denseSample(c, T, x, o);
-    let sum = 0;
-    for (let i = 0; i < dim; i++) sum += x[o + i];
-    // NaN or ±∞ anywhere makes the sum minus itself non-zero.
-    if (sum - sum !== 0) return k;
-  }
-  return steps;
 }
