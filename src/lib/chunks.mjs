@@ -32,6 +32,8 @@ const GROUPS = [
   [/widgets\/plots\/time\//, 'time-plot'],
   [/widgets\/plots\/plane\//, 'plane-views'],
   [/widgets\/plots\/spectrum\/|node_modules\/fft\.js\/|widgets\/core\/(spectrum|window|peaks)\.ts/, 'spectrum'],
+  // The panel a reader picks a point on serves the Poincaré section and the stability chart, on two pages: a chunk of its own, not in the one every plot loads.
+  [/widgets\/plots\/point-panel\.ts$/, 'point-panel'],
   [/widgets\/plots\/[^/]+$|widgets\/controls\/(dom|format)\.ts/, 'plots'],
   [/widgets\/data\/(export|download)\.ts|widgets\/core\/(export-meta|csv|json)\.ts/, 'export'],
   // The page's side of the simulation worker: a simulator loads it only once its model proves costly (driver.ts).

@@ -128,7 +128,7 @@ test('a link to a simulator fetches the simulator and its views, and no other wi
   await page.waitForTimeout(500);
   const chunks = scripts(requests).map(chunkOf);
   for (const wanted of ['simulator', 'plots', 'time-plot', 'plane-views', 'model']) assert.ok(chunks.includes(wanted), `${wanted} in ${chunks.join(', ')}`);
-  const unwanted = ['chart', 'table', 'theory-check', 'poincare-section', 'stability-chart', 'method-comparison', 'analysis', 'compiler', 'share-ui', 'mathjs-instance', 'katex', 'editor', 'parser'];
+  const unwanted = ['chart', 'table', 'theory-check', 'poincare-section', 'stability-chart', 'point-panel', 'method-comparison', 'analysis', 'compiler', 'share-ui', 'mathjs-instance', 'katex', 'editor', 'parser'];
   assert.deepEqual(chunks.filter((name) => unwanted.includes(name)), []);
   assert.deepEqual(problems, []);
   await page.close();

@@ -79,3 +79,14 @@ export function sizeCanvas(canvas: HTMLCanvasElement, cssWidth: number, cssHeigh
   canvas.height = height;
   return true;
 }
+
+/**
+ * Sizes a visible canvas (sizeCanvas) and returns its 2D context set to draw
+ * in CSS pixels, or null when the browser gives none.
+ */
+export function scaledContext(canvas: HTMLCanvasElement, cssWidth: number, cssHeight: number, ratio: number): CanvasRenderingContext2D | null {
+  sizeCanvas(canvas, cssWidth, cssHeight, ratio);
+  const g = canvas.getContext('2d');
+  g?.setTransform(ratio, 0, 0, ratio, 0, 0);
+  return g;
+}

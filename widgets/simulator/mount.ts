@@ -34,6 +34,16 @@ export interface MountOptions {
   label?: string;
 }
 
+/** The pieces of one simulator, wired to its driver. */
+interface Parts {
+  readonly root: SimulatorElement;
+  readonly driver: Driver;
+  readonly transport: Transport;
+  readonly readouts: Readouts;
+  readonly notices: Notices;
+  readonly panel: DataPanel;
+}
+
 /**
  * Assembles a simulator widget: controls and readouts, the blow-up alert and
  * the capped-record note, the views, and the data panel, all wired to one
@@ -46,6 +56,28 @@ export function mount(
   views: View[],
   make: (dt: number) => Simulation,
 ): SimulatorElement {
+  const parts = assemble(options, first, views, make);
+  const { root, driver } = parts;
+  followFrames(parts, views);
+  followState(parts);
+  // Space plays and pauses from anywhere in the simulator, except on a control that takes Space itself.
+  root.addEventListener('keydown', (e) => {
+    if (e.key !== ' ' || e.ctrlKey || e.metaKey || e.altKey || isControl(e.target)) return;
+    e.preventDefault();
+    driver.toggle();
+  });
+  followLifetime(root, driver, options.invalidation);
+  showFirst(parts, first, views);
+  // A reader whose system asks for reduced motion starts each simulator themselves.
+  const reducedMotion = prefersReducedMotion();
+  if (reducedMotion) root.dataset.reducedMotion = '';
+  if (options.autoplay !== false && !reducedMotion) driver.play();
+  root.simulator = simulatorHandle(driver, model, make);
+  return root;
+}
+
+/** The simulator's element with its bar (transport and readouts), notices, views and data panel, and the driver that runs them. */
+function assemble(options: MountOptions, first: Simulation, views: View[], make: (dt: number) => Simulation): Parts {
   const notices = new Notices();
   const readouts = new Readouts();
   const viewBox = h('div', 'pb-views', {}, ...views.map((v) => v.element));
@@ -70,7 +102,11 @@ export function mount(
     first.dt,
   );
   root.append(h('div', 'pb-bar', {}, transport.element, readouts.element), notices.alert, notices.note, viewBox, panel.element);
+  return { root, driver, transport, readouts, notices, panel };
+}
 
+/** Each frame updates the readouts, and twice a second the rate, the cap note and the data panel; the simulator is ready once every view is. */
+function followFrames({ root, driver, transport, readouts, notices, panel }: Parts, views: View[]): void {
   let slow = 0;
   driver.on('frame', (stats) => {
     const sim = driver.simulation;
@@ -84,6 +120,10 @@ export function mount(
     }
     if (!root.hasAttribute('data-ready') && views.every((v) => v.element.hasAttribute('data-ready'))) root.setAttribute('data-ready', '');
   });
+}
+
+/** Playing, pausing, an error, and a new simulation (a restart, a new dt) show at once in the bar, the notices and the data panel. */
+function followState({ root, driver, transport, readouts, notices, panel }: Parts): void {
   driver.on('state', ({ playing, error }) => {
     readouts.update(driver.simulation, true);
     panel.update(driver.simulation, true);
@@ -100,29 +140,29 @@ export function mount(
     panel.update(sim, true);
     panel.listPlots();
   });
+}
 
-  root.addEventListener('keydown', (e) => {
-    if (e.key !== ' ' || e.ctrlKey || e.metaKey || e.altKey || isControl(e.target)) return;
-    e.preventDefault();
-    driver.toggle();
-  });
+/** Redraws as the simulator resizes, and ends with the cell that made it (`invalidation`). */
+function followLifetime(root: HTMLElement, driver: Driver, invalidation: Promise<unknown> | undefined): void {
   const resize = typeof ResizeObserver === 'undefined' ? null : new ResizeObserver(() => driver.requestDraw());
   resize?.observe(root);
   driver.on('dispose', () => resize?.disconnect());
-  void options.invalidation?.then(() => driver.dispose());
+  void invalidation?.then(() => driver.dispose());
+}
 
+/** The first simulation shown, paused, before the first frame. */
+function showFirst({ driver, transport, readouts, panel }: Parts, first: Simulation, views: View[]): void {
   readouts.reset(first);
   panel.update(first, true);
   panel.listPlots();
   views.forEach((v) => v.reset(first));
   transport.setPlaying(false, false);
   driver.requestDraw();
-  // A reader whose system asks for reduced motion starts each simulator themselves.
-  const reducedMotion = prefersReducedMotion();
-  if (reducedMotion) root.dataset.reducedMotion = '';
-  if (options.autoplay !== false && !reducedMotion) driver.play();
+}
 
-  root.simulator = {
+/** What scripts get as element.simulator: the driver's controls, and parameters set by name. */
+function simulatorHandle(driver: Driver, model: Model, make: (dt: number) => Simulation): SimulatorHandle {
+  return {
     driver,
     get simulation() {
       return driver.simulation;
@@ -145,7 +185,6 @@ export function mount(
     },
     dispose: () => driver.dispose(),
   };
-  return root;
 }
 
 /** True for targets that handle Space themselves: buttons, fields, links, editors. */

@@ -9,6 +9,7 @@ describe('src/lib/chunks.mjs: what loads together', () => {
       'node_modules/d3-scale/dist/d3-scale.mjs': 'plots',
       'widgets/plots/scale.ts': 'plots',
       'widgets/controls/format.ts': 'plots',
+      'widgets/plots/point-panel.ts': 'point-panel',
       'widgets/plots/time/time-plot.ts': 'time-plot',
       'widgets/plots/plane/phase-portrait.ts': 'plane-views',
       'widgets/plots/spectrum/spectrum-view.ts': 'spectrum',
