@@ -10,8 +10,9 @@
  *
  * Stages run side by side where that shortens the wall time on two cores
  * without one starving another: the site's build, then the end-to-end
- * tests (a browser mostly waiting on pages), in one lane; the type check,
- * the unit tests and the VS Code extension's tests in the other. A stage
+ * tests (browsers mostly waiting on pages), in one lane; the type check,
+ * the unit tests and the VS Code extension's tests in the other, at a lower
+ * priority, taking what the first lane leaves idle. A stage
  * that needs another's result (e2e needs the build) is not run when that one
  * failed, and is reported as blocked. Each stage's output is printed whole
  * when it ends, so that two stages' lines never interleave, and is kept in
@@ -19,7 +20,7 @@
  */
 import { spawn } from 'node:child_process';
 import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
-import { availableParallelism, loadavg, tmpdir } from 'node:os';
+import { availableParallelism, loadavg, setPriority, tmpdir } from 'node:os';
 import { delimiter, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
@@ -27,16 +28,19 @@ const ROOT = fileURLToPath(new URL('..', import.meta.url));
 
 /**
  * `needs`: stages whose success this one requires (else it is blocked);
- * `after`: stages it waits for, pass or fail, only so as not to compete with them for the cores.
- * @type {{ name: string, command: string[], needs?: string[], after?: string[], about: string }[]}
+ * `after`: stages it waits for, pass or fail, only so as not to compete with them for the cores;
+ * `background`: pure computation, run at a lower priority (nice 10), so that the build, on which e2e
+ * waits, and the browsers of e2e, whose pages wait on frames and timers, have the cores first, and these
+ * take what the others leave idle.
+ * @type {{ name: string, command: string[], needs?: string[], after?: string[], background?: boolean, about: string }[]}
  */
 const STAGES = [
   { name: 'build', command: ['astro', 'build'], about: 'the site, into dist/' },
   { name: 'e2e', command: ['npm', 'run', '--silent', 'test:e2e'], needs: ['build'], about: 'end-to-end tests in headless Chromium against dist/' },
-  { name: 'typecheck', command: ['tsc', '--noEmit'], about: 'the type check' },
-  { name: 'unit', command: ['vitest', 'run'], after: ['typecheck'], about: 'the unit tests (vitest)' },
+  { name: 'typecheck', command: ['tsc', '--noEmit'], background: true, about: 'the type check' },
+  { name: 'unit', command: ['vitest', 'run'], after: ['typecheck'], background: true, about: 'the unit tests (vitest)' },
   { name: 'vscode:setup', command: ['npm', 'run', '--silent', 'setup:vscode'], about: "the extension's own dependencies (npm install in vscode/)" },
-  { name: 'vscode:unit', command: ['npm', 'run', '--silent', 'test:vscode:unit'], needs: ['vscode:setup'], after: ['unit'], about: "the extension's build, type check and unit tests" },
+  { name: 'vscode:unit', command: ['npm', 'run', '--silent', 'test:vscode:unit'], needs: ['vscode:setup'], after: ['unit'], background: true, about: "the extension's build, type check and unit tests" },
   { name: 'vscode:host', command: ['npm', 'run', '--silent', 'test:vscode:host'], needs: ['vscode:setup'], after: ['vscode:unit'], about: "the extension's suite in a VS Code web build" },
 ];
 
@@ -78,6 +82,13 @@ function run(stage) {
     // Its own process group, so that an interrupted run takes the stage's whole tree down with it.
     const child = spawn(command, rest, { cwd: ROOT, env, stdio: ['ignore', 'pipe', 'pipe'], detached: process.platform !== 'win32' });
     running.set(stage.name, child);
+    if (stage.background && child.pid) {
+      try {
+        setPriority(child.pid, 10);
+      } catch {
+        // Not allowed here: it runs at the usual priority.
+      }
+    }
     const output = [];
     child.stdout.on('data', (chunk) => output.push(chunk));
     child.stderr.on('data', (chunk) => output.push(chunk));

@@ -31,6 +31,8 @@
  * that is not inside a box that clips or scrolls), and every plot's axes
  * read (labels that neither touch nor get cut, text ≥ 11 px).
  *
+ * Every page is checked in the book's fonts (see inTheBooksFonts).
+ *
  * A last test asserts what the sweep covered: every chapter the contents
  * page lists, and enough simulators, reserved boxes and codes compared.
  */
@@ -139,6 +141,25 @@ function outsideWidth(root) {
   return out;
 }
 
+/**
+ * Runs in the page before its scripts: the book's fonts are declared `font-display: optional`
+ * (src/lib/fonts.ts), so a face that has not arrived by the first layout, about 100 ms, is not used on that
+ * page view, and on a busy machine some pages come up in the system's fonts, whose wider text wraps a
+ * simulator's controls differently (the pendulum's on /for-teachers/ at 1280 px, where its row of controls
+ * has 6 px to spare). The sweep checks every page in the book's fonts, as a quiet machine shows it: each face
+ * waits for its file (`block`) instead. The rules are the book's own, declared by its head script; only how
+ * long a face is waited for changes.
+ */
+function inTheBooksFonts() {
+  new MutationObserver((records) => {
+    for (const record of records) {
+      for (const node of record.addedNodes) {
+        if (node.nodeName === 'STYLE' && node.textContent?.includes('font-display:optional')) node.textContent = node.textContent.replaceAll('font-display:optional', 'font-display:block');
+      }
+    }
+  }).observe(document, { childList: true, subtree: true });
+}
+
 /** Two animation frames: what a scroll or a style changed is laid out and drawn. */
 const frames = (page) => page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
 
@@ -166,6 +187,7 @@ export function sweepEveryPage(width) {
     for (const path of pages()) {
       test(path, async (t) => {
         const page = await site.context.newPage();
+        await page.addInitScript(inTheBooksFonts);
         await page.setViewportSize({ width, height: plan.height });
         const { problems, requests } = watchPage(page);
         /** Each check's failure, so that one failing check does not hide the others on this page. */
