@@ -19,7 +19,7 @@
  * the log folder named at the end (PHASEBOOK_TEST_LOGS, or a fresh temp dir).
  */
 import { spawn } from 'node:child_process';
-import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { availableParallelism, loadavg, setPriority, tmpdir } from 'node:os';
 import { delimiter, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -68,21 +68,31 @@ const say = (line) => console.log(`[${clock(Date.now() - began)}] ${line}`);
 /** The load average over the last minute, as `uptime` gives it: timings mean little without it. */
 const load = () => loadavg()[0].toFixed(2);
 
-/** @type {Map<string, { status: 'passed' | 'failed' | 'blocked', startedAt: number, ms: number, load: string, note?: string }>} */
+/** @type {Map<string, { status: 'passed' | 'failed' | 'blocked', startedAt: number, ms: number, cpu?: string, load: string, note?: string }>} */
 const results = new Map();
 /** @type {Map<string, import('node:child_process').ChildProcess>} */
 const running = new Map();
+
+/**
+ * GNU time, where there is one, to report the processor time each stage took (its own and its children's):
+ * beside the wall time and the load, it tells a slow stage from a starved one.
+ */
+const TIME = existsSync('/usr/bin/time') ? '/usr/bin/time' : null;
+/** nice(1), so that a background stage's whole tree starts at the lower priority; else the stage's own process is lowered once started. */
+const NICE = existsSync('/usr/bin/nice') ? '/usr/bin/nice' : null;
 
 /** Runs one stage to its end: its output goes to its log file and is printed whole when it ends. */
 function run(stage) {
   const startedAt = Date.now();
   say(`▶ ${stage.name}: ${stage.command.join(' ')}`);
+  const cpuFile = join(logs, `${stage.name.replace(':', '-')}.cpu`);
   return new Promise((resolve) => {
-    const [command, ...rest] = stage.command;
+    const niced = stage.background && NICE ? [NICE, '-n', '10', ...stage.command] : stage.command;
+    const [command, ...rest] = TIME ? [TIME, '-q', '-f', '%U %S', '-o', cpuFile, ...niced] : niced;
     // Its own process group, so that an interrupted run takes the stage's whole tree down with it.
     const child = spawn(command, rest, { cwd: ROOT, env, stdio: ['ignore', 'pipe', 'pipe'], detached: process.platform !== 'win32' });
     running.set(stage.name, child);
-    if (stage.background && child.pid) {
+    if (stage.background && !NICE && child.pid) {
       try {
         setPriority(child.pid, 10);
       } catch {
@@ -98,9 +108,16 @@ function run(stage) {
       const text = Buffer.concat(output).toString();
       writeFileSync(join(logs, `${stage.name.replace(':', '-')}.log`), text);
       const status = code === 0 ? 'passed' : 'failed';
+      let cpu = '';
+      try {
+        const [user, system] = readFileSync(cpuFile, 'utf8').trim().split('\n').pop().split(' ').map(Number);
+        if (Number.isFinite(user + system)) cpu = clock(1000 * (user + system));
+      } catch {
+        // No GNU time, or the stage never started.
+      }
       console.log(`\n──── ${stage.name} (${stage.command.join(' ')}) ────\n${text.trimEnd()}\n──── ${stage.name}: ${status} in ${clock(ms)}${note ? ` (${note})` : ''} ────\n`);
       say(`${status === 'passed' ? '✔' : '✘'} ${stage.name} ${status} in ${clock(ms)} (load average ${load()})`);
-      results.set(stage.name, { status, startedAt: startedAt - began, ms, load: load(), note });
+      results.set(stage.name, { status, startedAt: startedAt - began, ms, cpu, load: load(), note });
       resolve();
     };
     child.on('error', (error) => finish(1, error.message));
@@ -153,9 +170,9 @@ clearInterval(heartbeat);
 
 const rows = chosen.map((s) => {
   const r = results.get(s.name);
-  return [s.name, r.status, r.status === 'blocked' ? '—' : clock(r.ms), r.status === 'blocked' ? '—' : clock(r.startedAt), r.load, r.note ?? ''];
+  return [s.name, r.status, r.status === 'blocked' ? '—' : clock(r.ms), r.status === 'blocked' ? '—' : clock(r.startedAt), r.cpu || '—', r.load, r.note ?? ''];
 });
-const head = ['stage', 'status', 'time', 'started', 'load at end', ''];
+const head = ['stage', 'status', 'time', 'started', 'cpu', 'load at end', ''];
 const widths = head.map((h, i) => Math.max(h.length, ...rows.map((r) => r[i].length)));
 const line = (cells) => cells.map((c, i) => c.padEnd(widths[i])).join('  ').trimEnd();
 console.log(`\n${line(head)}\n${line(widths.map((w) => '─'.repeat(w)))}\n${rows.map(line).join('\n')}`);
