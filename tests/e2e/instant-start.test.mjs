@@ -200,12 +200,16 @@ describe('a new H in any chapter is compiled on the page, and the simulator foll
       assert.deepEqual(heavyIn(requests), []);
 
       await typeIntoCell(page, edit.cell, `${edit.cell} = ${edit.js ? edit.hamiltonian : `"${edit.hamiltonian}"`}`);
-      // The first simulator built from the new H (it carries H's source), once it has drawn.
+      // The simulator built from the new H (it carries H's source) that starts where the closed form does, once it
+      // has drawn: others may use H too from other states (the introduction's batch starts at q = 1.8), and on a
+      // busy machine one of them may be ready first.
       const handle = await page.waitForFunction(
-        (hamiltonian) =>
-          [...document.querySelectorAll('[data-widget="simulator"][data-ready]')].find((el) => el.simulator?.model?.source === hamiltonian),
-        edit.hamiltonian,
-        { timeout: 30_000 },
+        ([hamiltonian, start]) =>
+          [...document.querySelectorAll('[data-widget="simulator"][data-ready]')].find(
+            (el) => el.simulator?.model?.source === hamiltonian && start.every((v, i) => Math.abs(el.simulator.simulation.initial[i] - v) <= 1e-12),
+          ),
+        [edit.hamiltonian, edit.truth(0, 0)],
+        { timeout: 60_000 },
       );
       // Let it run a little, then stop it and read where it is.
       await page.waitForTimeout(600);
