@@ -6,5 +6,9 @@ export default defineConfig({
   root: fileURLToPath(new URL('.', import.meta.url)),
   test: {
     include: ['test/unit/**/*.test.ts'],
+    // One limit for every test and hook, set nowhere else: a guard against a hang, not a measure of speed.
+    // vitest's 5 s default failed tests that parse the book's chapters on a loaded machine.
+    testTimeout: 120_000,
+    hookTimeout: 120_000,
   },
 });

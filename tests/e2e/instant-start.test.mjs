@@ -4,7 +4,9 @@
  * modules, and nothing depends on it being there.
  *
  * - Reading a chapter through, however long, requests none of mathjs,
- *   KaTeX's JavaScript, the cell parser or the editor.
+ *   KaTeX's JavaScript, the cell parser or the editor; every simulator
+ *   appears in the box the build reserved for it; code not laid out keeps
+ *   its place (these three on every page, in the sweep of every-page.mjs).
  * - With the build's data missing, or from another version, every chapter
  *   still runs and its theory checks still agree: the page compiles and
  *   typesets for itself, and it must be seen doing so (mathjs is fetched).
@@ -75,20 +77,6 @@ async function assertChapterHealthy(page) {
   for (const check of checks) assertAgrees(check);
   return checks.length;
 }
-
-describe('reading a chapter loads no heavy module', () => {
-  for (const path of CHAPTERS) {
-    test(path, async () => {
-      const { page, problems, requests } = await open(path);
-      // The reader stays a while: idle time fetches nothing heavy either.
-      await page.waitForTimeout(1500);
-      assert.deepEqual(heavyIn(requests), []);
-      await assertChapterHealthy(page);
-      assert.deepEqual(problems, []);
-      await page.close();
-    });
-  }
-});
 
 test('the stability chart’s worker carries no mathjs: it builds its model from the compiled data it is sent', () => {
   const assets = join(DIST, '_astro');
@@ -212,12 +200,16 @@ describe('a new H in any chapter is compiled on the page, and the simulator foll
       assert.deepEqual(heavyIn(requests), []);
 
       await typeIntoCell(page, edit.cell, `${edit.cell} = ${edit.js ? edit.hamiltonian : `"${edit.hamiltonian}"`}`);
-      // The first simulator built from the new H (it carries H's source), once it has drawn.
+      // The simulator built from the new H (it carries H's source) that starts where the closed form does, once it
+      // has drawn: others may use H too from other states (the introduction's batch starts at q = 1.8), and on a
+      // busy machine one of them may be ready first.
       const handle = await page.waitForFunction(
-        (hamiltonian) =>
-          [...document.querySelectorAll('[data-widget="simulator"][data-ready]')].find((el) => el.simulator?.model?.source === hamiltonian),
-        edit.hamiltonian,
-        { timeout: 30_000 },
+        ([hamiltonian, start]) =>
+          [...document.querySelectorAll('[data-widget="simulator"][data-ready]')].find(
+            (el) => el.simulator?.model?.source === hamiltonian && start.every((v, i) => Math.abs(el.simulator.simulation.initial[i] - v) <= 1e-12),
+          ),
+        [edit.hamiltonian, edit.truth(0, 0)],
+        { timeout: 60_000 },
       );
       // Let it run a little, then stop it and read where it is.
       await page.waitForTimeout(600);
@@ -242,45 +234,6 @@ describe('a new H in any chapter is compiled on the page, and the simulator foll
         assert.ok(heavyIn(requests).includes('KaTeX'));
       }
       assert.deepEqual(problems, []);
-      await page.close();
-    });
-  }
-});
-
-describe('every simulator appears in the box the build reserved for it, at desk and phone widths', () => {
-  for (const width of [1100, 390]) {
-    test(`${width} px`, async (t) => {
-      const page = await site.context.newPage();
-      await page.setViewportSize({ width, height: 900 });
-      let compared = 0;
-      for (const path of CHAPTERS) {
-        await page.goto(`${site.origin}${path}`);
-        // Boxes of cells that have not started yet (below the first view) are still the build's.
-        const reserved = await page.evaluate(() =>
-          [...document.querySelectorAll('[data-reserve="simulator"]')].map((box) => ({
-            id: box.closest('[data-cell]').id,
-            height: box.closest('[data-cell-output]').getBoundingClientRect().height,
-          })),
-        );
-        await cellsReady(page);
-        await widgetsReady(page);
-        for (const { id, height } of reserved) {
-          const real = await page.evaluate((id) => {
-            const output = document.getElementById(id).querySelector('[data-cell-output]');
-            const simulator = output.querySelector('[data-widget="simulator"]');
-            if (!simulator) return null;
-            // A message the widget shows later (behind real time, samples dropped, a blow-up) is news the
-            // reader is meant to see arrive; the reservation is for the widget as it first appears.
-            const messages = [...simulator.querySelectorAll(':scope > .pb-note, :scope > .pb-alert')].reduce((sum, m) => sum + m.getBoundingClientRect().height, 0);
-            return output.getBoundingClientRect().height - messages;
-          }, id);
-          if (real === null) continue;
-          compared++;
-          assert.ok(Math.abs(real - height) <= 1.5, `${path} ${id}: reserved ${height} px, the simulator takes ${real} px`);
-        }
-      }
-      t.diagnostic(`${compared} simulators compared`);
-      assert.ok(compared >= 10);
       await page.close();
     });
   }
@@ -347,29 +300,4 @@ describe('a link to a place in a chapter', () => {
       await page.close();
     }
   });
-});
-
-test('a cell’s code far from the view keeps the place it takes when laid out, to the layout’s rounding', async (t) => {
-  const page = await site.context.newPage();
-  let compared = 0;
-  let worst = 0;
-  for (const path of CHAPTERS) {
-    await page.goto(`${site.origin}${path}`);
-    const heights = () => page.evaluate(() => [...document.querySelectorAll('pre.cell-code')].map((pre) => pre.getBoundingClientRect().height));
-    const lines = await page.evaluate(() => [...document.querySelectorAll('pre.cell-code')].map((pre) => Number(pre.style.getPropertyValue('--lines'))));
-    const skipped = await page.evaluate(() => [...document.querySelectorAll('pre.cell-code')].map((pre) => !pre.firstElementChild.checkVisibility({ contentVisibilityAuto: true })));
-    const before = await heights();
-    await page.addStyleTag({ content: 'pre.cell-code { content-visibility: visible !important; }' });
-    const after = await heights();
-    for (const [i, height] of after.entries()) {
-      if (!skipped[i]) continue;
-      compared++;
-      worst = Math.max(worst, Math.abs(before[i] - height) / lines[i]);
-      // Each line box is laid out on Chromium's grid of 1/64 px; the place kept is lines × the exact line height.
-      assert.ok(Math.abs(before[i] - height) <= lines[i] / 64 + 0.01, `${path}, code ${i + 1} (${lines[i]} lines): ${before[i]} px kept, ${height} px laid out`);
-    }
-  }
-  t.diagnostic(`${compared} codes compared while not laid out; largest difference ${worst.toFixed(4)} px a line`);
-  assert.ok(compared >= 40, `${compared} codes compared while not laid out`);
-  await page.close();
 });

@@ -1,10 +1,12 @@
 /**
  * The site as a reader meets it: contents, chapter pages, math, links, and
- * that nothing goes wrong on load (console, page errors, foreign hosts).
+ * the book without JavaScript. (That nothing goes wrong on any page's load,
+ * no console or page error, no failed or foreign request, is checked in the
+ * sweep of every page, every-page.mjs, at three widths.)
  */
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
-import { cellsReady, openSite, watchPage } from './fixture.mjs';
+import { openSite, watchPage } from './fixture.mjs';
 
 /** @type {Awaited<ReturnType<typeof openSite>>} */
 let site;
@@ -30,21 +32,6 @@ test('contents page lists the chapters in declared order, with descriptions', as
   assert.equal(descriptions.length, titles.length);
   assert.ok(descriptions.every((text) => text.trim().length > 0));
   await page.close();
-});
-
-test('every page loads with no console error, page error, failed or foreign request', async () => {
-  const paths = ['/', ...(await chapterPaths())];
-  assert.ok(paths.length >= 3, `expected at least two chapters, got ${paths}`);
-  for (const path of paths) {
-    const page = await site.context.newPage();
-    const { problems, requests } = watchPage(page);
-    await page.goto(site.origin + path, { waitUntil: 'load' });
-    if ((await page.locator('[data-cell]').count()) > 0) await cellsReady(page);
-    await page.waitForTimeout(200);
-    assert.deepEqual(problems, [], `problems on ${path}`);
-    assert.ok(requests.every((url) => url.startsWith(site.origin) || url.startsWith('data:')), `requests of ${path}`);
-    await page.close();
-  }
 });
 
 test('KaTeX renders inline and display math on the introduction', async () => {

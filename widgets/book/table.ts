@@ -9,7 +9,8 @@
  *   and becomes a focusable, named region, so a keyboard can scroll it.
  * - `rows` (and `caption`) may be functions: the table reads them again every
  *   `refresh` seconds and updates in place, keeping the reader's scroll
- *   position, until it leaves the page (a live readout of a simulator).
+ *   position (it never narrows, and a reader scrolled to its end stays
+ *   there), until it leaves the page (a live readout of a simulator).
  */
 import { cellText, checkRows, headerText, resolveColumns, type ResolvedColumn, type TableOptions } from './table-format.ts';
 
@@ -90,9 +91,27 @@ export function table(options: TableOptions): HTMLElement {
   box.append(el);
   const name = options.label ?? first.caption ?? `Table of ${columns.map((c) => c.label).join(', ')}`;
 
+  /** The widest the live table has been laid out, px: it never narrows again (see keepPlace). */
+  let widest = 0;
+  /**
+   * A live table's numbers change width as they change (5e-14, then 4.7e-12), and a narrower table would
+   * pull back a reader scrolled to its end (the browser clamps the scroll position), a wider one push the
+   * last column out of view. So the table only ever widens, which keeps any scroll position, and a reader
+   * at the end stays at the end.
+   */
+  const keepPlace = (atEnd: boolean) => {
+    const width = el.getBoundingClientRect().width;
+    if (width > widest) {
+      widest = width;
+      el.style.minWidth = `${width}px`;
+    }
+    if (atEnd) box.scrollLeft = box.scrollWidth;
+  };
   const show = ({ rows, caption: text }: ReturnType<typeof read>) => {
+    const atEnd = box.scrollLeft > 0 && box.scrollLeft + box.clientWidth >= box.scrollWidth - 1;
     if (text !== undefined) caption.textContent = text;
     body.replaceChildren(...bodyRows(rows, columns));
+    if (live) keepPlace(atEnd);
   };
   show(first);
 

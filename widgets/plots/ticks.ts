@@ -80,6 +80,9 @@ export function linearLabels(lo: number, hi: number, room: LabelRoom): AxisLabel
   for (let count = most; count >= 1; count--) {
     const values = linearTicks(lo, hi, count);
     if (values.length === 0 || values.length === previous) continue;
+    // One tick does not tell a scale: when no two labels fit the room (a y label a little wider than the margin,
+    // say, in a fallback font), the fewest two or more are given, squeezed by the drawing, rather than a lone "0".
+    if (values.length < 2 && fewest !== null) break;
     // d3 may give more ticks than asked: no denser than about `spacing` apart, however narrow the labels
     if (values.length > 2 && Math.abs(room.position(values[1]) - room.position(values[0])) < 0.75 * spacing) continue;
     previous = values.length;
@@ -93,7 +96,8 @@ export function linearLabels(lo: number, hi: number, room: LabelRoom): AxisLabel
       if (labelsFit(relative.values, relative.labels, room)) return relative;
     }
   }
-  // Not even two ticks fit (a very short axis): the fewest there are, which the drawing squeezes.
+  // Not even two ticks fit (a very short axis, or labels wider than the room): the fewest there are, two or
+  // more if there can be, which the drawing squeezes.
   return fewest ?? { values: [], labels: [], offset: 0, offsetText: '' };
 }
 

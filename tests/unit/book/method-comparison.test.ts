@@ -44,7 +44,7 @@ const runOf = (runs: ReturnType<typeof runComparison>['runs'], method: MethodNam
   return run as MethodRun;
 };
 
-describe('runComparison on the harmonic oscillator', { timeout: 60_000 }, () => {
+describe('runComparison on the harmonic oscillator', () => {
   it('measures the energy errors the closed forms give, Ω = ω, and the work per step', async () => {
     const dt = 0.05;
     const steps = 20_000;

@@ -14,9 +14,6 @@ import { main } from '../../../widgets/cli/main.ts';
 import { parseCSV } from '../../../widgets/core/csv-read.ts';
 import { captureWrites, useScratchCache } from '../support/cli-harness.ts';
 
-// The first run of a model compiles it with mathjs; on a busy machine that alone can take seconds.
-vi.setConfig({ testTimeout: 30_000 });
-
 let dir: string;
 let stderr: string[];
 let stdout: string[];
@@ -79,7 +76,7 @@ describe('spectrum', () => {
     expect(f[0]).toBeCloseTo(9.535 / (2 * Math.PI), 2);
     expect(f[1] / f[0]).toBeCloseTo(2, 3);
     expect(f[2] / f[0]).toBeCloseTo(3, 3);
-  }, 30_000);
+  });
 
   it.each([
     ['a binary file', Buffer.from([0, 1, 2, 3, 0, 255, 10, 0]), /is binary; spectrum reads CSV, JSON, NPZ or Parquet files as phasebook writes them/],

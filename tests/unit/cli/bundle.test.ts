@@ -50,7 +50,7 @@ describe('bin/phasebook.mjs', () => {
     expect(freshEntry(outDir, root)).toBeUndefined();
     expect(await launch('a', '-b')).toEqual({ stdout: 'first a -b\n', code: 3 });
     expect(freshEntry(outDir, root)).toBe(join(outDir, 'main.js'));
-  }, 30_000);
+  });
 
   it('rebuilds after a source is edited, so the edit is what runs', async () => {
     await launch();
@@ -58,12 +58,12 @@ describe('bin/phasebook.mjs', () => {
     expect(freshEntry(outDir, root)).toBeUndefined();
     expect((await launch()).stdout).toBe('second \n');
     expect(freshEntry(outDir, root)).toBeDefined();
-  }, 30_000);
+  });
 
   it('falls back to compiling with tsx when no bundle can be written', async () => {
     writeFileSync(join(root, 'build'), 'a file where the build folder should be');
     expect(await launch('x')).toEqual({ stdout: 'first x\n', code: 3 });
-  }, 30_000);
+  });
 });
 
 describe('freshEntry(outDir, root)', () => {
@@ -84,5 +84,5 @@ describe('freshEntry(outDir, root)', () => {
     await launch();
     rmSync(words);
     expect(freshEntry(outDir, root)).toBeUndefined();
-  }, 30_000);
+  });
 });

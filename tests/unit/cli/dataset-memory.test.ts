@@ -20,7 +20,7 @@ let dir: string;
 beforeAll(async () => {
   entry = await ensureCli();
   dir = mkdtempSync(join(tmpdir(), 'phasebook-memory-'));
-}, 60_000);
+});
 
 /** Runs `phasebook simulate …args` in a process whose heap is capped; returns its status and peak RSS in bytes. */
 function capped(args: string[]): Promise<{ code: number; stderr: string; maxRss: number }> {
@@ -62,5 +62,5 @@ describe('memory stays flat', () => {
     expect(large.size).toBeGreaterThan(1.5 * HEAP_MB * 2 ** 20);
     // Flat: within a third of the smaller run's peak (the young generations' and the allocator's slack).
     expect(large.maxRss).toBeLessThan(1.35 * small.maxRss);
-  }, 120_000);
+  });
 });

@@ -24,9 +24,6 @@ const HAS_NUMPY = runsWithPython('numpy');
 const HAS_PYARROW = runsWithPython('pyarrow');
 const TOLERANCE = 1e-12;
 
-// The first run of a model compiles it with mathjs; on a busy machine that alone can take seconds.
-vi.setConfig({ testTimeout: 30_000 });
-
 let dir: string;
 let stderr: string[];
 let stdout: string[];
@@ -313,7 +310,7 @@ print(json.dumps({'t': t.shape, 'x': x.shape, 'dxdt': dxdt.shape, 'H': f['H'].sh
     // RK 3/8 at dt = 5e-4 keeps H to ~1e-12 over 10 time units on these orbits (its error is O(dt⁴)).
     expect(got.energy).toBeLessThan(1e-10);
     expect(got.dt).toBeLessThan(1e-14);
-  }, 60_000);
+  });
 });
 
 describe('workers and shards', () => {
@@ -331,7 +328,7 @@ describe('workers and shards', () => {
     );
     expect(files[1].equals(files[0])).toBe(true);
     expect(files[2].equals(files[0])).toBe(true);
-  }, 60_000);
+  });
 
   it('hands each task to worker threads, which give the numbers this thread gives', async () => {
     // The worker code path itself, in this process (tsx compiles the worker's TypeScript), against the local executor.
@@ -355,7 +352,7 @@ describe('workers and shards', () => {
     const threads = await collect([0, 1, 2].map(() => workerExecutor({ recipe: run.recipe, setup })));
     expect(here).toHaveLength(9 * 41 * 6);
     expect(threads).toEqual(here);
-  }, 60_000);
+  });
 
   it.each(['json', 'npz', 'parquet'])('merges %s shards into exactly the unsharded file, whatever order they are given in', async (format) => {
     const whole = join(dir, `whole.${format}`);
@@ -364,7 +361,7 @@ describe('workers and shards', () => {
     const merged = join(dir, `merged.${format}`);
     expect(await main(['merge', '--output', merged, ...[3, 1, 4, 2].map((i) => join(dir, `s${i}.${format}`))])).toBe(0);
     expect(readFileSync(merged).equals(readFileSync(whole))).toBe(true);
-  }, 60_000);
+  });
 
   it('merges the shards of a grid into the unsharded file, each grid point where the whole run puts it', async () => {
     const grid = [...OSCILLATOR, '--grid', 'q=-1:1:5,p=-0.5:0.5:3', '--t-end', '3', '--every', '300', '--derivatives'];
@@ -374,7 +371,7 @@ describe('workers and shards', () => {
     expect(await main(['merge', '--output', join(dir, 'm.npz'), join(dir, 'g2.npz'), join(dir, 'g3.npz'), join(dir, 'g1.npz')])).toBe(0);
     expect(readFileSync(join(dir, 'm.npz')).equals(readFileSync(whole))).toBe(true);
     checkNpz(npzJs(whole), 15, 21, true);
-  }, 60_000);
+  });
 
   it('merges wide Parquet shards into the unsharded file', async () => {
     const whole = join(dir, 'whole.parquet');
@@ -382,7 +379,7 @@ describe('workers and shards', () => {
     for (const i of [1, 2]) expect(await simulate(...SET, '--layout', 'wide', '--shard', `${i}/2`, '--output', join(dir, `s${i}.parquet`))).toBe(0);
     expect(await main(['merge', '--output', join(dir, 'm.parquet'), join(dir, 's1.parquet'), join(dir, 's2.parquet')])).toBe(0);
     expect(readFileSync(join(dir, 'm.parquet')).equals(readFileSync(whole))).toBe(true);
-  }, 60_000);
+  });
 });
 
 describe('phasebook reproduce', () => {

@@ -20,7 +20,7 @@ let marker: string;
 
 beforeAll(async () => {
   await ensureCli();
-}, 60_000);
+});
 beforeEach(() => {
   scratch = mkdtempSync(join(tmpdir(), 'phasebook-files-'));
   marker = join(scratch, 'MARKER');
@@ -83,7 +83,7 @@ describe('reproduce runs no code of a file’s without --trust-code', () => {
     expect(exit.stderr).toContain(`phasebook: ${file}: its H is JavaScript that does not translate to an expression, so reproducing it would run its author's code: (t, [q, p]) => { try { process.getBuiltinModule('fs').writeFileSync(`);
     expect(exit.stderr).toMatch(/ — pass --trust-code if you trust its author\n$/);
     expect(existsSync(marker)).toBe(false);
-  }, 30_000);
+  });
 
   it('refuses a vector field likewise, and shows a long code cut to a line', async () => {
     const file = join(scratch, 'field.npz');
@@ -93,7 +93,7 @@ describe('reproduce runs no code of a file’s without --trust-code', () => {
     expect(exit.code).toBe(2);
     oneLine(exit);
     expect(exit.stderr).toMatch(/: its vector field is JavaScript, so reproducing it would run its author's code: \(t, x, dxdt\) => \{ const unused0 = 0; .*… \(\d+ characters\) — pass --trust-code/);
-  }, 30_000);
+  });
 
   it('reproduces an H that translates to an expression without the flag: none of its code runs', async () => {
     const file = join(scratch, 'translated.json');
@@ -102,7 +102,7 @@ describe('reproduce runs no code of a file’s without --trust-code', () => {
     expect(exit.stderr).toBe('');
     expect(exit.code).toBe(0);
     expect(exit.stdout).toMatch(/: reproduced, 3 trajectories × 21 samples, all 252 numbers identical\n$/);
-  }, 30_000);
+  });
 
   it('reproduces code it may run with --trust-code, in the sandbox: the marker is still not written', async () => {
     const file = join(scratch, 'data.npz');
@@ -112,7 +112,7 @@ describe('reproduce runs no code of a file’s without --trust-code', () => {
     expect(exit.code).toBe(0);
     expect(exit.stdout).toMatch(/: reproduced, 3 trajectories × 21 samples, all 252 numbers identical\n$/);
     expect(existsSync(marker)).toBe(false);
-  }, 30_000);
+  });
 
   it.each([
     ['writes a file', () => `(t, x) => { process.getBuiltinModule('fs').writeFileSync(${JSON.stringify(marker)}, 'x'); return 1; }`],
@@ -132,7 +132,7 @@ describe('reproduce runs no code of a file’s without --trust-code', () => {
     await new Promise((resolve) => setTimeout(resolve, 100));
     expect(existsSync(marker)).toBe(false);
     expect(partials()).toEqual([]);
-  }, 30_000);
+  });
 
   it('never runs a file’s H that is a call making a function, trusted or not', async () => {
     const file = await craftedJson(`(() => { process.getBuiltinModule('fs').writeFileSync(${JSON.stringify(marker)}, 'x'); return (t, x) => 1; })()`);
@@ -143,7 +143,7 @@ describe('reproduce runs no code of a file’s without --trust-code', () => {
       expect(exit.stderr).toMatch(/: H must be one JS function, \(t, x\) => …, not a call/);
     }
     expect(existsSync(marker)).toBe(false);
-  }, 30_000);
+  });
 });
 
 describe('damaged files, said with their names', () => {
@@ -163,7 +163,7 @@ describe('damaged files, said with their names', () => {
     oneLine(exit);
     expect(exit.stderr).toContain(`phasebook: ${file}: `);
     expect(exit.stderr).toMatch(message);
-  }, 30_000);
+  });
 
   it('merge refuses a JSON shard whose row lacks a value: status 2, the file named, no output', async () => {
     for (const i of [1, 2]) await simulate(['--hamiltonian', 'p^2/2 + q^2/2', ...SET, '--shard', `${i}/2`, '--output', join(scratch, `s${i}.json`)]);
@@ -196,7 +196,7 @@ describe('damaged files, said with their names', () => {
     expect(exit.stderr).toMatch(new RegExp(`^phasebook: ${shard.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')} is not a ZIP archive \\(NPZ\\) that can be read: x\\.npy is damaged: its bytes' CRC-32 is `));
     expect(existsSync(out)).toBe(false);
     expect(partials()).toEqual([]);
-  }, 30_000);
+  });
 
   it.each(['merge', 'reproduce'])('%s says a damaged Parquet file is damaged, naming it, instead of an internal error', async (command) => {
     for (const i of [1, 2]) await simulate(['--hamiltonian', 'p^2/2 + q^2/2', ...SET, '--shard', `${i}/2`, '--output', join(scratch, `s${i}.parquet`)]);
@@ -211,7 +211,7 @@ describe('damaged files, said with their names', () => {
     oneLine(exit);
     expect(exit.stderr).toMatch(new RegExp(`^phasebook: ${shard.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}( is damaged|:)`));
     expect(exit.stderr).not.toMatch(/internal error/);
-  }, 30_000);
+  });
 });
 
 describe('signals', () => {
@@ -237,7 +237,7 @@ describe('signals', () => {
     expect(exit.stderr).toBe(`phasebook: stopped by ${signal}; ${out} was not written\n`);
     expect(existsSync(out)).toBe(false);
     expect(partials()).toEqual([]);
-  }, 60_000);
+  });
 
   it('SIGTERM stops reproduce once it writes its run again: status 143, one line naming the file, no temporary file left', async () => {
     const [file] = await bigShards();
@@ -248,7 +248,7 @@ describe('signals', () => {
     expect(exit.code).toBe(143);
     expect(exit.stderr).toBe(`phasebook: stopped by SIGTERM; ${file} was not reproduced\n`);
     expect(partials()).toEqual([]);
-  }, 60_000);
+  });
 });
 
 /** Resolves once `condition` holds, checking every 10 ms. */

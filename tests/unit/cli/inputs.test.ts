@@ -19,7 +19,7 @@ const OSCILLATOR = [...RUN, '--hamiltonian', 'p^2/2 + q^2/2'];
 let scratch: string;
 beforeAll(async () => {
   await ensureCli();
-}, 60_000);
+});
 beforeEach(() => {
   scratch = mkdtempSync(join(tmpdir(), 'phasebook-inputs-'));
 });

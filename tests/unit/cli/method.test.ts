@@ -27,7 +27,7 @@ beforeEach(() => {
 });
 afterEach(() => vi.restoreAllMocks());
 
-describe('phasebook simulate --method', { timeout: 60_000 }, () => {
+describe('phasebook simulate --method', () => {
   for (const method of ['verlet', 'yoshida4', 'midpoint', 'adaptive']) {
     it(`records --method ${method} in the meta, and reproduce runs it again bit for bit`, async () => {
       const out = join(dir, `${method}.json`);

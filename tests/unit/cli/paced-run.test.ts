@@ -49,12 +49,13 @@ describe('pacedRun(simulation, steps, options)', () => {
     try {
       // Delivered as the process delivers a real SIGINT: to the listeners, from the event loop.
       setTimeout(() => process.emit('SIGINT'), 50);
-      const started = performance.now();
       const run = pacedRows(simulation, 1e12, { signal: guard.signal });
       await expect(run).rejects.toBeInstanceOf(Interrupted);
       await expect(run).rejects.toMatchObject({ signal: 'SIGINT', status: 130 });
-      expect(performance.now() - started).toBeLessThan(1000);
+      // Stopped at the signal, 50 ms in, not at the end of the run: told by the steps done, not by a clock
+      // (1e10 steps would be minutes of integration; a busy machine only does fewer).
       expect(simulation.steps).toBeGreaterThan(0);
+      expect(simulation.steps).toBeLessThan(1e10);
     } finally {
       guard.release();
     }

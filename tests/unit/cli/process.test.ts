@@ -62,7 +62,7 @@ beforeAll(async () => {
   expect(parserChunks.mathjs.length).toBeGreaterThan(0);
   expect(parserChunks.acorn.length).toBeGreaterThan(0);
   expect([...parserChunks.mathjs, ...parserChunks.acorn]).not.toContain(entryUrl);
-}, 60_000);
+});
 
 beforeEach(() => {
   scratch = mkdtempSync(join(tmpdir(), 'phasebook-process-'));
@@ -112,7 +112,7 @@ describe('phasebook simulate, as a process', () => {
     const other = await phasebook([...OSCILLATOR, '--param', 'w=3']);
     expectOscillator(other, 3);
     expect(loadsMathjs(other)).toBe(false);
-  }, 30_000);
+  });
 
   it('translates a JS function H with acorn on the first run, and takes it from the cache on the next', async () => {
     const first = await phasebook([...JS_OSCILLATOR, '--param', 'w=2']);
@@ -121,7 +121,7 @@ describe('phasebook simulate, as a process', () => {
     const second = await phasebook([...JS_OSCILLATOR, '--param', 'w=2']);
     expect(second.stdout).toBe(first.stdout);
     expect(loadsAcorn(second) || loadsMathjs(second)).toBe(false);
-  }, 30_000);
+  });
 
   it('integrates a --vector-field with neither mathjs nor acorn, and caches nothing', async () => {
     const run = await phasebook([...FIELD, '--param', 'w=3']);
@@ -135,7 +135,7 @@ describe('phasebook simulate, as a process', () => {
     expectOscillator(withH, 3);
     expect(parseCSV(withH.stdout).columns).toEqual(['t', 'q', 'p', 'H']);
     expect(loadsMathjs(withH) || loadsAcorn(withH)).toBe(false);
-  }, 30_000);
+  });
 
   it.each([
     ['text that is not a cache file', () => 'not a cache file'],
@@ -154,7 +154,7 @@ describe('phasebook simulate, as a process', () => {
     expect(loadsMathjs(again)).toBe(true);
     expect(readFileSync(path, 'utf8')).not.toBe(damaged);
     expect(loadsMathjs(await phasebook([...OSCILLATOR, '--param', 'w=2']))).toBe(false);
-  }, 30_000);
+  });
 
   it('compiles afresh when the file under its name holds another model (a hash collision, a stale copy)', async () => {
     await phasebook([...OSCILLATOR, '--param', 'w=2']);
@@ -166,7 +166,7 @@ describe('phasebook simulate, as a process', () => {
     const again = await phasebook(quartic);
     expect(again.stdout).toBe(good.stdout);
     expect(loadsMathjs(again)).toBe(true);
-  }, 30_000);
+  });
 
   it('runs, compiling each time, when the cache folder cannot be made', async () => {
     const blocker = join(scratch, 'a-file');
@@ -177,7 +177,7 @@ describe('phasebook simulate, as a process', () => {
     const second = await phasebook([...OSCILLATOR, '--param', 'w=2'], unwritable);
     expectOscillator(second, 2);
     expect(loadsMathjs(second)).toBe(true);
-  }, 30_000);
+  });
 
   it('neither reads nor writes the cache with --no-cache', async () => {
     await phasebook([...OSCILLATOR, '--param', 'w=2']);
@@ -186,7 +186,7 @@ describe('phasebook simulate, as a process', () => {
     expect(loadsMathjs(uncached)).toBe(true);
     await phasebook([...JS_OSCILLATOR, '--param', 'w=2', '--no-cache']);
     expect(readdirSync(cache)).toHaveLength(1);
-  }, 30_000);
+  });
 
   it.each([
     [['--vector-field', '(t, x, dxdt) => { dxdt[0] = x[1] +* 2; }'], /^phasebook: syntax error in --vector-field: /],
@@ -202,5 +202,5 @@ describe('phasebook simulate, as a process', () => {
     expect(run.stderr).toMatch(message);
     expect(run.stderr.trim().split('\n')).toHaveLength(1);
     expect(readdirSync(scratch).filter((f) => !f.startsWith('loads-'))).toEqual([]);
-  }, 30_000);
+  });
 });

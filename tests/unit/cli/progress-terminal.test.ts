@@ -24,7 +24,7 @@ let dir: string;
 beforeAll(async () => {
   await ensureCli();
   dir = mkdtempSync(join(tmpdir(), 'phasebook-progress-'));
-}, 60_000);
+});
 
 const quote = (s: string) => `'${s.replace(/'/g, `'\\''`)}'`;
 
@@ -60,12 +60,12 @@ describe('the progress bar', () => {
     }
     expect(output.endsWith('\r\x1b[K')).toBe(true);
     expect(readdirSync(dir)).toContain('set.npz');
-  }, 150_000);
+  });
 
   it('draws nothing when stderr is not a terminal', async () => {
     const out = join(dir, 'quiet.npz');
     const { code, output } = await run('node', [BIN, ...RUN(50), '--output', out]);
     expect(code).toBe(0);
     expect(output).toBe('');
-  }, 60_000);
+  });
 });

@@ -27,7 +27,7 @@ let marker: string;
 
 beforeAll(async () => {
   await ensureCli();
-}, 60_000);
+});
 beforeEach(() => {
   scratch = mkdtempSync(join(tmpdir(), 'phasebook-sandbox-'));
   marker = join(scratch, 'MARKER');
@@ -168,7 +168,7 @@ describe('simulate runs the user’s JavaScript in the sandbox', () => {
     );
     expect(files[1].equals(files[0])).toBe(true);
     expect(files[2].equals(files[0])).toBe(true);
-  }, 60_000);
+  });
 
   it('stops a sandboxed run whose H never returns on SIGTERM: status 143, no partial, no sandbox left running', async () => {
     const out = join(scratch, 'out.csv');
@@ -189,7 +189,7 @@ describe('simulate runs the user’s JavaScript in the sandbox', () => {
     expect(stderr).toMatch(/^phasebook: stopped by SIGTERM; \S+out\.csv was not written\n$/);
     expect(leftovers()).toEqual([]);
     for (const pid of started) expect(existsSync(`/proc/${pid}`)).toBe(false);
-  }, 30_000);
+  });
 });
 
 describe('what the CLI knows of a sandboxed model', () => {

@@ -130,12 +130,12 @@ describe('bin/phasebook.mjs', () => {
     expect(table.rows).toBe(3);
     // Closed form (paper 7.4): p = −10 + 0.8t.
     expect(table.data[2 * 4 + 2]).toBeCloseTo(-9.2, 10); // rounding of 2000 additions
-  }, 30_000);
+  });
 
   it('exits with status 2 and one stderr line on bad input', async () => {
     const error = await run('node', [BIN, 'simulate', '--dof', '1']).catch((e: { code: number; stderr: string }) => e);
     expect((error as { code: number }).code).toBe(2);
     expect((error as { stderr: string }).stderr.trim().split('\n')).toHaveLength(1);
     expect((error as { stderr: string }).stderr).toMatch(/^phasebook: --hamiltonian is required/);
-  }, 30_000);
+  });
 });

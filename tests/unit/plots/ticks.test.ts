@@ -122,6 +122,16 @@ describe('plots/ticks', () => {
     }
   });
 
+  it('a y axis whose labels are a little wider than its room (a fallback font) still gets two, not a lone 0', () => {
+    // The time plot's at dt = 0.5 on a page whose font had not loaded: "−2×10¹¹" measured 48.2 px in a 48 px room.
+    const wide: LabelRoom = { ...room(-2.6e11, 6e10, 'y', 150), measure: (t) => 1.25 * estimateWidth(t, FONT) };
+    const axis = linearLabels(-2.6e11, 6e10, wide);
+    expect(axis.labels.filter(Boolean).length).toBeGreaterThanOrEqual(2);
+    assertReadsBack(axis);
+    // where they fit, as many as fit
+    expect(linearLabels(-2.6e11, 6e10, room(-2.6e11, 6e10, 'y', 150)).labels.filter(Boolean).length).toBeGreaterThanOrEqual(2);
+  });
+
   it('labelsFit measures neighbours side by side on x and stacked, within the room, on y', () => {
     const r = room(0, 100, 'x', 100);
     expect(labelsFit([0, 30], ['0', '10'], r)).toBe(true);

@@ -24,7 +24,7 @@ async function messageOf(raw: unknown): Promise<string> {
   return message;
 }
 
-describe('simulator option method', { timeout: 30_000 }, () => {
+describe('simulator option method', () => {
   it('is a known option, and RK 3/8 leaves the spec as it was', async () => {
     const settings = await parseSimulatorOptions({ hamiltonian: 'p^2/2', initial: [0, 1], method: 'adaptive', rtol: 1e-8, atol: 1e-12 });
     expect(settings.model.method).toEqual({ name: 'adaptive', rtol: 1e-8, atol: 1e-12 });
@@ -68,7 +68,7 @@ describe('simulator option method', { timeout: 30_000 }, () => {
  * method here takes in closed form: it is linear, so one step multiplies the
  * state by a fixed matrix.
  */
-describe('simulator option method with a ready model', { timeout: 30_000 }, () => {
+describe('simulator option method with a ready model', () => {
   const oscillator = () => canonicalEquations({ dof: 1, hamiltonian: 'p^2/2 + q^2/2' });
   const h = 0.1;
   const steps = 1000;

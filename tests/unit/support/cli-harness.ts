@@ -15,7 +15,7 @@ export function useScratchCache({ compiledCli = true } = {}): void {
   beforeAll(async () => {
     process.env.PHASEBOOK_CACHE_DIR = mkdtempSync(join(tmpdir(), 'phasebook-cache-'));
     if (compiledCli) await ensureCli();
-  }, 60_000);
+  });
   afterAll(() => {
     if (userCache === undefined) delete process.env.PHASEBOOK_CACHE_DIR;
     else process.env.PHASEBOOK_CACHE_DIR = userCache;

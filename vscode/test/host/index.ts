@@ -7,7 +7,7 @@
 import 'mocha/mocha.js';
 
 export async function run(): Promise<void> {
-  mocha.setup({ ui: 'bdd', reporter: 'spec', timeout: 60_000, color: false });
+  mocha.setup({ ui: 'bdd', reporter: 'spec', timeout: 120_000, color: false });
   // Imported after setup: the files call describe() as they load.
   await import('./diagnostics.test.ts');
   await import('./code-lens.test.ts');

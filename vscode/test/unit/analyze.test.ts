@@ -8,7 +8,7 @@ import { readBook, readFixture, realBuiltins, ROOT } from './support.ts';
 let builtins: Set<string>;
 beforeAll(() => {
   builtins = realBuiltins();
-}, 30_000);
+});
 
 /** A problem as `code line:character-line:character`, lines and characters from 0. */
 function where(text: string, problem: Problem): string {

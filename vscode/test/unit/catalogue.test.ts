@@ -8,7 +8,7 @@ describe('generateCatalogue(root)', () => {
   test('lists exactly the entries of createLibrary, in its order', () => {
     const names = realCatalogue().builtins.map((b) => b.name);
     expect(names).toEqual(Object.keys(createLibrary(pageContext([]))));
-  }, 30_000);
+  });
 
   test("takes simulator's options from SimulatorOptions, with their doc comments and types", () => {
     const simulator = realCatalogue().builtins.find((b) => b.name === 'simulator')!;

@@ -13,7 +13,7 @@ beforeAll(async () => {
     themes: ['github-dark'],
     langs: ['markdown', 'javascript', 'yaml', { ...grammar, name: 'phasebook-mdx', embeddedLangs: ['markdown', 'javascript', 'yaml'] }],
   });
-}, 30_000);
+});
 
 /** The scopes of the token that holds `text` on line `line` (from 0). */
 function scopesOf(source: string, line: number, text: string): string[] {

@@ -16,7 +16,7 @@ describe('a new chapter from the template', () => {
     expect(fileNameFor('???')).toBe('chapter.mdx');
   });
 
-  test("chapterFromTemplate(template, title, order) is the template with the author's title and order, and a valid chapter", { timeout: 30_000 }, () => {
+  test("chapterFromTemplate(template, title, order) is the template with the author's title and order, and a valid chapter", () => {
     const text = chapterFromTemplate(readBook('templates/chapter.mdx'), 'Waves: a first look', 8);
     expect(text).toMatch(/^title: "Waves: a first look"$/m);
     expect(text).toMatch(/^order: 8$/m);

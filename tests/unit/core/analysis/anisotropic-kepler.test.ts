@@ -120,7 +120,7 @@ describe('the regularised field and its Jacobian', () => {
       regularisedJacobian(paper.system, E, s, B);
       B.forEach((v, i) => expect(v).toBeCloseTo(A[i], Math.abs(A[i]) > 1e3 ? 4 : 8));
     }
-  }, 60_000);
+  });
 });
 
 describe('at isotropy (factor 1): the Kepler problem', () => {
@@ -155,9 +155,10 @@ describe('at isotropy (factor 1): the Kepler problem', () => {
   });
 
   it('has a bounded tangent flow: λ(t)·t stays bounded and λ falls to zero', () => {
-    const run = keplerLyapunov(system, E, regularisedStart(state), { time: 2000, every: 10 });
+    // λ·t is 1.3 to 1.9 out to t = 2000 (a chaotic orbit's grows as 0.28·t); at t = 1000 λ is already 1.4e−3
+    const run = keplerLyapunov(system, E, regularisedStart(state), { time: 1000, every: 10 });
     const at = (t: number) => run.estimates[run.times.findIndex((s) => s >= t)];
-    for (const t of [100, 500, 1000, 2000]) expect(Math.abs(at(t) * t)).toBeLessThan(5);
+    for (const t of [100, 250, 500, 1000]) expect(Math.abs(at(t) * t)).toBeLessThan(5);
     expect(Math.abs(run.exponent)).toBeLessThan(2e-3);
   });
 });
@@ -186,13 +187,14 @@ describe('through close approaches, at the paper’s factor 1.5', () => {
     const s = Float64Array.from(state);
     const dt = 1e-4;
     let worst = 0;
-    for (let k = 0; k < 100 && Number.isFinite(worst); k++) {
+    // (until it has lost it: at t ≈ 86, the first approach it cannot follow)
+    for (let k = 0; k < 100 && Number.isFinite(worst) && worst <= 1e-4; k++) {
       step.advance(s, 1, new Float64Array(0), 0, k * 10000, dt, 10000);
       worst = Math.max(worst, Math.abs(keplerEnergy(system, s) - E) / Math.abs(E));
       if (!Number.isFinite(keplerEnergy(system, s))) worst = Infinity;
     }
     expect(worst).toBeGreaterThan(1e-4);
-  }, 60_000);
+  });
 });
 
 /**
@@ -226,23 +228,32 @@ describe('chaos above Devaney’s μ = 9/8, at the paper’s μ = 1.625', () => 
   const E = paperEnergy;
 
   it('gives a positive exponent on orbits launched across the section, with a plateau', () => {
-    for (const [s, p] of [[0.7, 0], [0.3, 0.1], [-0.5, 0.4], [0.9, 0]]) {
-      const run = keplerLyapunov(system, E, sectionLaunch(system, E, s, p)!, { time: 2000, every: 10 });
+    // The plateau's oracle: the estimate λ(t) holds between T/2 and T. A regular orbit's estimate decays as
+    // ln t / t, a ratio λ(T)/λ(T/2) near 0.56 at T = 400; these orbits give 0.91 to 1.10 (and 0.95 to 1.06 at
+    // T = 2000, where this test ran five times longer to the same verdict).
+    const T = 400;
+    const plateau = (run: ReturnType<typeof keplerLyapunov>) => {
       const at = (t: number) => run.estimates[run.times.findIndex((x) => x >= t)];
+      return at(T) / at(T / 2);
+    };
+    for (const [s, p] of [[0.7, 0], [0.3, 0.1], [-0.5, 0.4], [0.9, 0]]) {
+      const run = keplerLyapunov(system, E, sectionLaunch(system, E, s, p)!, { time: T, every: 10 });
       expect(run.finished).toBe(true);
       expect(run.energyError).toBeLessThan(1e-7);
       expect(run.exponent).toBeGreaterThan(0.15);
-      // no ln t / t decay between 1000 and 2000 (that would give a ratio near 0.55)
-      expect(at(2000) / at(1000)).toBeGreaterThan(0.8);
+      expect(plateau(run)).toBeGreaterThan(0.8);
     }
-  }, 60_000);
+    // the measure can tell: at isotropy, where every orbit is regular, the estimate decays (a ratio of 0.24)
+    const regular = keplerLyapunov(isotropic.system, isotropicEnergy, regularisedStart(isotropic.state), { time: T, every: 10 });
+    expect(plateau(regular)).toBeLessThan(0.6);
+  });
 
   it('matches the two-orbit method, which needs no Jacobian', () => {
     const start = sectionLaunch(system, E, 0.7, 0)!;
     const tangent = keplerLyapunov(system, E, start, { time: 600 }).exponent;
     const other = twoOrbitExponent(start, 600);
     expect(Math.abs(other - tangent) / tangent).toBeLessThan(0.25);
-  }, 120_000);
+  });
 
   it('has the section’s symmetries: (σ, π) → (−σ, −π) maps orbits to orbits; (σ, π) → (σ, −π) reverses them', () => {
     const start = [0.55, 0.3];

@@ -20,7 +20,7 @@ describe('sectionBox', () => {
   });
 });
 
-describe('chaotic area against Hénon & Heiles (1964), Fig. 6', { timeout: 120_000 }, () => {
+describe('chaotic area against Hénon & Heiles (1964), Fig. 6', () => {
   for (const published of HENON_HEILES_FIG6) {
     it(`at E = ${published.energy.toFixed(4)}: the published share ${published.chaotic}`, () => {
       const area = chaoticArea(henonHeiles, published.energy, { plane: 'x', grid: 16, time: 600 });

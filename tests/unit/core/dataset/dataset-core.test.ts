@@ -4,7 +4,7 @@
  * an energy surface against the pendulum's closed form, listed output times
  * and derivatives against the harmonic oscillator's.
  */
-import { describe, expect, it, vi } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { canonicalEquations } from '../../../../widgets/core/canonical-equations.ts';
 import { BatchRun, rowColumns } from '../../../../widgets/core/dataset/batch-run.ts';
 import { gridPoint } from '../../../../widgets/core/dataset/grid.ts';
@@ -12,9 +12,6 @@ import { fillInitial, trajectoryCount, type InitialSet } from '../../../../widge
 import { CounterRandom, philox4x32 } from '../../../../widgets/core/dataset/philox.ts';
 import { everyKSteps, listedTimes } from '../../../../widgets/core/dataset/sample-times.ts';
 import { BlowUpError, InputError } from '../../../../widgets/core/errors.ts';
-
-// The first model compiles with mathjs; on a busy machine that alone can take seconds.
-vi.setConfig({ testTimeout: 30_000 });
 
 const hex = (words: Uint32Array) => Array.from(words, (w) => w.toString(16).padStart(8, '0'));
 

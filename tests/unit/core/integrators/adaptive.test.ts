@@ -47,7 +47,7 @@ async function keplerPeriod(rtol: number) {
   return { error: Math.hypot(x[0] - start[0], x[1] - start[1]), stats: statsOf(model) };
 }
 
-describe('adaptive method against closed forms', { timeout: 30_000 }, () => {
+describe('adaptive method against closed forms', () => {
   for (const rtol of [1e-6, 1e-10]) {
     it(`follows q = cos t on [0, 20] within its tolerance at every sample, rtol = ${rtol}`, async () => {
       const { worst, stats } = await oscillator(rtol);

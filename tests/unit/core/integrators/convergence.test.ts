@@ -69,7 +69,7 @@ const ORDERS: [MethodName, number][] = [
   ['midpoint', 2],
 ];
 
-describe('order of convergence, error against dt on closed forms', { timeout: 30_000 }, () => {
+describe('order of convergence, error against dt on closed forms', () => {
   for (const [method, order] of ORDERS) {
     it(`${method} has order ${order} on the harmonic oscillator`, async () => {
       const { order: measured, errors } = await measuredOrder(OSCILLATOR, method);

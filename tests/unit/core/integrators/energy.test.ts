@@ -53,19 +53,19 @@ const cases: [string, HamiltonianSpec, number[], number][] = [
 
 describe('energy error over long runs: bounded for the symplectic methods, drifting for RK 3/8', () => {
   for (const [name, spec, start, dt] of cases) {
-    it(`RK 3/8 drifts linearly on ${name}: 1e6 steps of dt = ${dt}`, { timeout: 60_000 }, async () => {
+    it(`RK 3/8 drifts linearly on ${name}: 1e6 steps of dt = ${dt}`, async () => {
       const { first, last } = await energyError(spec, start, 'rk38', dt, 1_000_000);
       expect(last / first).toBeGreaterThan(7);
       expect(last / first).toBeLessThan(13);
     });
     for (const method of ['verlet', 'yoshida4'] as const) {
-      it(`${method} keeps the energy error bounded on ${name}: 1e6 steps of dt = ${dt}`, { timeout: 60_000 }, async () => {
+      it(`${method} keeps the energy error bounded on ${name}: 1e6 steps of dt = ${dt}`, async () => {
         const symplectic = await energyError(spec, start, method, dt, 1_000_000);
         expect(symplectic.last / symplectic.first).toBeLessThan(1.1);
         expect(symplectic.last / symplectic.first).toBeGreaterThan(1 / 1.1);
       });
     }
-    it(`midpoint keeps the energy error bounded on ${name}: 2e5 steps of dt = ${dt}`, { timeout: 60_000 }, async () => {
+    it(`midpoint keeps the energy error bounded on ${name}: 2e5 steps of dt = ${dt}`, async () => {
       const { first, last } = await energyError(spec, start, 'midpoint', dt, 200_000);
       expect(last / first).toBeLessThan(1.1);
       expect(last / first).toBeGreaterThan(1 / 1.1);
@@ -91,5 +91,5 @@ describe('energy error over long runs: bounded for the symplectic methods, drift
     expect(Math.abs((await order('verlet')) - 2)).toBeLessThan(0.2);
     expect(Math.abs((await order('yoshida4')) - 4)).toBeLessThan(0.3);
     expect(Math.abs((await order('midpoint')) - 2)).toBeLessThan(0.2);
-  }, 60_000);
+  });
 });

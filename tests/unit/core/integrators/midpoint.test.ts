@@ -17,7 +17,7 @@ function jacobianOf(source: string, params: Float64Array, t: number, x: number[]
   return Array.from(out);
 }
 
-describe('implicit midpoint rule', { timeout: 30_000 }, () => {
+describe('implicit midpoint rule', () => {
   it('has the exact Jacobian of the pendulum: ∂f/∂x = [[0, 1], [−cos q, 0]]', async () => {
     const compiled = await compileModel({ dof: 1, hamiltonian: 'p^2/2 - g*cos(q)', params: { g: 2 }, method: 'midpoint' });
     expect(compiled.method).toBe('midpoint');

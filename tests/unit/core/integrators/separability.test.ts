@@ -18,7 +18,7 @@ async function separates(source: string, dof = 1, paramNames: string[] = []) {
   return separability(parsed.names, derivatives);
 }
 
-describe('separability of H into T(p) + V(q, t)', { timeout: 30_000 }, () => {
+describe('separability of H into T(p) + V(q, t)', () => {
   it.each([
     ['the pendulum', 'p^2/2 - cos(q)', 1, []],
     ['a driven oscillator, V depending on t', 'p^2/2 + q^2/2 - F*q*cos(Omega*t)', 1, ['F', 'Omega']],
