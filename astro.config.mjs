@@ -1,26 +1,29 @@
 // @ts-check
+import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'astro/config';
 import mdx from '@astrojs/mdx';
 import remarkMath from 'remark-math';
 import rehypeKatex from 'rehype-katex';
-import { remarkCells, CELL_CODE_LANGUAGE } from './src/lib/remark-cells.mjs';
-import { bookChunks } from './src/lib/chunks.mjs';
-import { linkedPreloads } from './src/lib/linked-preloads.mjs';
+import { remarkCells, CELL_CODE_LANGUAGE } from './site/lib/remark-cells.mjs';
+import { bookChunks } from './site/lib/chunks.mjs';
+import { linkedPreloads } from './site/lib/linked-preloads.mjs';
+
+const CORE = fileURLToPath(new URL('./core/', import.meta.url));
 
 /**
  * Rollup's `moduleSideEffects`: false for the core's modules, which are pure.
  * A module of the core that nothing uses is then dropped even when it is
- * reached through the core's front door (widgets/core/index.ts), so that
+ * reached through the core's front door (core/index.ts), so that
  * importing one name from the index never brings the rest of the core into a
  * page's first load or a worker.
  * @param {string} id
  */
 function coreIsPure(id) {
-  return !/[\\/]widgets[\\/]core[\\/]/.test(id);
+  return !id.startsWith(CORE);
 }
 
 /**
- * Takes KaTeX's @font-face rules out of its stylesheet: src/lib/fonts.ts
+ * Takes KaTeX's @font-face rules out of its stylesheet: site/lib/fonts.ts
  * declares the same faces with the book's loading rules (font-display
  * optional, nothing on a slow connection) instead of KaTeX's `block`, which
  * reflowed every line holding inline math when a math font arrived late.
@@ -32,7 +35,7 @@ function katexWithoutFontFaces() {
     transform(code, id) {
       if (!/[\\/]katex[\\/]dist[\\/]katex(\.min)?\.css$/.test(id)) return null;
       const changed = code.replace(/@font-face\s*\{[^}]*\}/g, '');
-      if (changed === code) this.error('katex.min.css declares no @font-face any more; check src/lib/fonts.ts');
+      if (changed === code) this.error('katex.min.css declares no @font-face any more; check site/lib/fonts.ts');
       return { code: changed, map: null };
     },
   };
@@ -47,11 +50,13 @@ const outDir = process.env.PHASEBOOK_OUT_DIR;
 /**
  * PHASEBOOK_BASE serves the book under a sub-path, e.g. `/phasebook/` for a
  * GitHub project site; unset, the book lives at the root of its host. Links
- * in src/ are built on import.meta.env.BASE_URL so that they follow it.
+ * in site/ are built on import.meta.env.BASE_URL so that they follow it.
  */
 const base = process.env.PHASEBOOK_BASE || undefined;
 
 export default defineConfig({
+  // The site's pages, layouts and build-time code; the book's browser code is in cells/ and widgets/.
+  srcDir: './site',
   site: 'http://localhost:4321',
   ...(outDir ? { outDir } : {}),
   ...(base ? { base } : {}),
@@ -86,7 +91,7 @@ export default defineConfig({
         treeshake: { moduleSideEffects: coreIsPure },
         output: {
           manualChunks: bookChunks(),
-          // The book's modules are all grouped (src/lib/chunks.mjs); this merges the small pieces Rollup
+          // The book's modules are all grouped (site/lib/chunks.mjs); this merges the small pieces Rollup
           // cuts from third-party code loaded on demand, each of which would cost a round trip.
           experimentalMinChunkSize: 20_000,
         },

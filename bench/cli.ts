@@ -108,7 +108,7 @@ function startup(): void {
     {
       // What bin/phasebook.mjs did before: tsx compiles the TypeScript at every start; there was no cache.
       name: 'before: TypeScript compiled by tsx at start, no cache',
-      argv: ['node', '--input-type=module', '-e', "import { register } from 'tsx/esm/api'; register(); const { main } = await import('./widgets/cli/main.ts'); process.exitCode = await main(process.argv.slice(1));", ...tiny, '--no-cache'],
+      argv: ['node', '--input-type=module', '-e', "import { register } from 'tsx/esm/api'; register(); const { main } = await import('./cli/main.ts'); process.exitCode = await main(process.argv.slice(1));", ...tiny, '--no-cache'],
       cwd: ROOT,
       env,
     },

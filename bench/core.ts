@@ -5,8 +5,8 @@
  * Accuracy: the largest error of the final state against the hand-written
  * loop run at dt/8 (4096× smaller truncation error).
  */
-import { canonicalEquations, type HamiltonianSpec } from '../widgets/core/canonical-equations.ts';
-import type { Model } from '../widgets/core/types.ts';
+import { canonicalEquations, type HamiltonianSpec } from '../core/model/canonical-equations.ts';
+import type { Model } from '../core/types.ts';
 import * as hand from './hand-written.ts';
 import { canonicalEquation, plainRk38, type PlainHamiltonian } from './paper-reference.ts';
 

@@ -7,11 +7,11 @@
  * conserved). The adaptive method's "step" is one interval dt between
  * samples; its own steps are counted beside it.
  */
-import { canonicalEquations, type HamiltonianSpec } from '../widgets/core/canonical-equations.ts';
-import type { AdaptiveStats } from '../widgets/core/integrators/dormand-prince.ts';
-import { METHOD_NAMES, methodChoice, type MethodName } from '../widgets/core/integrators/methods.ts';
-import type { MidpointStats } from '../widgets/core/integrators/midpoint.ts';
-import type { Model } from '../widgets/core/types.ts';
+import { canonicalEquations, type HamiltonianSpec } from '../core/model/canonical-equations.ts';
+import type { AdaptiveStats } from '../core/integrators/dormand-prince.ts';
+import { METHOD_NAMES, methodChoice, type MethodName } from '../core/integrators/methods.ts';
+import type { MidpointStats } from '../core/integrators/midpoint.ts';
+import type { Model } from '../core/types.ts';
 import * as hand from './hand-written.ts';
 
 const DT = 5e-4;

@@ -16,10 +16,10 @@
  * cost gives a constant slope, an exponential one a slope that grows with
  * the range (the build this replaced doubled per degree of freedom).
  */
-import { COMPILED_FORMAT, type CompiledModel } from '../widgets/core/compiled-model.ts';
-import { generateCode, hamiltonEquations, parseHamiltonian } from '../widgets/core/expression/compile-expression.ts';
-import { loadMathjs } from '../widgets/core/expression/mathjs.ts';
-import { modelFromCompiled } from '../widgets/core/model-from-compiled.ts';
+import { COMPILED_FORMAT, type CompiledModel } from '../core/model/compiled-model.ts';
+import { generateCode, hamiltonEquations, parseHamiltonian } from '../core/expression/compile-expression.ts';
+import { loadMathjs } from '../core/expression/mathjs.ts';
+import { modelFromCompiled } from '../core/model/model-from-compiled.ts';
 import { fpuSource, harmonicSource } from './chains.ts';
 
 const DOFS = [1, 2, 4, 8, 16, 32, 64, 100];

@@ -1,10 +1,10 @@
 /**
- * The compiled command line: widgets/cli/main.ts bundled by esbuild into plain
+ * The compiled command line: cli/main.ts bundled by esbuild into plain
  * JavaScript in build/cli/, once at `npm install` (the `prepare` script) and by
  * `npm run build:cli`, so that a run starts without compiling TypeScript.
  *
  * Code splitting puts mathjs (the factories of
- * widgets/core/expression/mathjs-instance.ts), acorn and the model compiler in
+ * core/expression/mathjs-instance.ts), acorn and the model compiler in
  * chunks of their own, which `import()` loads only when a model must be
  * compiled: a run whose model is in the cache, or that is given a vector
  * field, never reads them.
@@ -22,10 +22,10 @@ import { fileURLToPath } from 'node:url';
 /** The project root: the folder holding bin/. */
 export const ROOT = fileURLToPath(new URL('..', import.meta.url));
 export const OUT_DIR = join(ROOT, 'build', 'cli');
-const ENTRY = 'widgets/cli/main.ts';
-const WORKER_ENTRY = 'widgets/cli/batch-worker.ts';
-/** The sandbox in which the user's JavaScript runs, a process of its own (widgets/cli/sandbox-process.ts). */
-const SANDBOX_ENTRY = 'widgets/cli/sandbox-child.ts';
+const ENTRY = 'cli/main.ts';
+const WORKER_ENTRY = 'cli/dataset/worker-thread.ts';
+/** The sandbox in which the user's JavaScript runs, a process of its own (cli/sandbox/sandbox-process.ts). */
+const SANDBOX_ENTRY = 'cli/sandbox/sandbox-child.ts';
 /** Bumped when the manifest's layout changes, so an old one reads as stale. */
 const MANIFEST_FORMAT = 1;
 
@@ -83,8 +83,16 @@ export async function buildCli({ outDir = OUT_DIR, root = ROOT, clean = false } 
   const builtAt = Date.now() - 50;
   const result = await build({
     absWorkingDir: root,
-    // The worker threads of a dataset run load their own entry (widgets/cli/dataset-executors.ts), and so does the sandbox.
-    entryPoints: [ENTRY, WORKER_ENTRY, SANDBOX_ENTRY].filter((entry) => existsSync(join(root, entry))),
+    // The worker threads of a dataset run load their own entry (cli/dataset/executors.ts), and so does the sandbox
+    // (cli/sandbox/sandbox-process.ts). Named, so that all three land at the top of outDir whatever folders their
+    // sources are in.
+    entryPoints: Object.fromEntries(
+      [
+        ['main', ENTRY],
+        ['worker-thread', WORKER_ENTRY],
+        ['sandbox-child', SANDBOX_ENTRY],
+      ].filter(([, entry]) => existsSync(join(root, entry))),
+    ),
     outdir: outDir,
     bundle: true,
     splitting: true,

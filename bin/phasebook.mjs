@@ -23,7 +23,7 @@ async function loadMain() {
   if (entry) return import(pathToFileURL(entry).href);
   const { register } = await import('tsx/esm/api');
   register();
-  return import('../widgets/cli/main.ts');
+  return import('../cli/main.ts');
 }
 
 const { main } = await loadMain();

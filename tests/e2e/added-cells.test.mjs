@@ -19,7 +19,7 @@ const outputOfLast = (page) => addedCells(page).last().locator('[data-cell-outpu
 test('a reader adds a cell below any cell, runs it, renames it by editing, and deletes it; reloads keep it', async () => {
   const { page, problems } = await openChapter(site, '/adiabatic-invariants/');
   await page.locator('[data-cell="params"] [data-cell-add]').click();
-  // The code that builds a cell of the reader's comes with the first one (widgets/cells/chapter.ts).
+  // The code that builds a cell of the reader's comes with the first one (cells/chapter.ts).
   await addedCells(page).first().waitFor();
   assert.equal(await addedCells(page).count(), 1);
   // It sits right below the cell it was added to, with the cursor in it.

@@ -1,5 +1,5 @@
 /**
- * The book's chart() and table() as a reader meets them (widgets/book/chart.ts,
+ * The book's chart() and table() as a reader meets them (widgets/chapter/chart/chart.ts,
  * table.ts): a chart's text description and its data-table view reached by
  * keyboard, its CSV holding every point drawn and its PNG the figure with its
  * legend, a redraw when the theme changes; Kepler's live table updating in

@@ -67,7 +67,7 @@ export function watchPage(page) {
     if (url.protocol !== 'data:' && !LOCAL_HOSTS.has(url.hostname)) problems.push(`foreign request: ${request.url()}`);
   });
   page.on('requestfailed', (request) => {
-    // A font declared `font-display: optional` (src/lib/fonts.ts) that misses its moment may be abandoned by
+    // A font declared `font-display: optional` (site/lib/fonts.ts) that misses its moment may be abandoned by
     // the browser: by design, and nothing a reader sees.
     if (request.resourceType() === 'font' && request.failure()?.errorText === 'net::ERR_ABORTED') return;
     // A worker's script still loading when the page reloads or navigates is abandoned with it.
@@ -88,7 +88,7 @@ export async function firstViewReady(page) {
 /**
  * Reads the whole chapter the way a reader does: scrolls down through it a
  * viewport at a time, so that every cell starts (cells start as they come
- * near the view, widgets/cells/schedule.ts), waits until every cell has
+ * near the view, cells/schedule.ts), waits until every cell has
  * shown its first value or error, and scrolls back to the top.
  */
 export async function cellsReady(page) {

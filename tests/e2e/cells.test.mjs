@@ -11,7 +11,7 @@ let site;
 before(async () => (site = await openSite()));
 after(() => site?.close());
 
-/** The inspector shows numbers to 12 significant digits (widgets/cells/inspect.ts). */
+/** The inspector shows numbers to 12 significant digits (cells/inspect.ts). */
 const PERIOD_OF = (omega) => `period = ${Number(((2 * Math.PI) / omega).toPrecision(12))}`;
 
 test('cells show their first values: numbers inspected, html as DOM', async () => {

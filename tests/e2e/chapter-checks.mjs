@@ -78,7 +78,7 @@ function readChecks(all, method) {
 
 /**
  * Every theory check on the page, in page order: its data attributes (see
- * widgets/book/theory-check.ts), with the numbers (measured, predicted,
+ * widgets/chapter/theory-check/theory-check.ts), with the numbers (measured, predicted,
  * tolerance = the sum of the errors allowed, error = the difference as
  * compared, errorFormula, errorIntegration, errorMeasurement) as numbers,
  * NaN when absent, and its text. With `method`, each also carries the text
@@ -161,7 +161,7 @@ export function drawnPixels(page, selector) {
 }
 
 /**
- * The series of the chart whose label is `label` (widgets/book/chart.ts),
+ * The series of the chart whose label is `label` (widgets/chapter/chart/chart.ts),
  * once it has drawn: each with its label, kind ('line', 'dots', 'band'),
  * number of curves, number of points and its values ({x, y} of each curve);
  * and the chart's text description.

@@ -143,7 +143,7 @@ function outsideWidth(root) {
 
 /**
  * Runs in the page before its scripts: the book's fonts are declared `font-display: optional`
- * (src/lib/fonts.ts), so a face that has not arrived by the first layout, about 100 ms, is not used on that
+ * (site/lib/fonts.ts), so a face that has not arrived by the first layout, about 100 ms, is not used on that
  * page view, and on a busy machine some pages come up in the system's fonts, whose wider text wraps a
  * simulator's controls differently (the pendulum's on /for-teachers/ at 1280 px, where its row of controls
  * has 6 px to spare). The sweep checks every page in the book's fonts, as a quiet machine shows it: each face

@@ -17,7 +17,7 @@ before(async () => (site = await openSite()));
 after(() => site?.close());
 
 const SIM = '[data-cell="sim"] [data-widget="simulator"]';
-/** The inspector shows numbers to 12 significant digits (widgets/cells/inspect.ts). */
+/** The inspector shows numbers to 12 significant digits (cells/inspect.ts). */
 const PERIOD_OF = (omega) => `period = ${Number(((2 * Math.PI) / omega).toPrecision(12))}`;
 
 /** The simulated time of the playground's simulator. */
@@ -315,7 +315,7 @@ test('a batch of 100 000 trajectories starts, and draws a stated sample of 2000 
   await typeIntoCell(page, 'options', "options = ({dt: 5e-4, speed: 1, views: ['time', 'phase']})");
   await typeIntoCell(page, 'initial', 'initial = Array.from({length: 100000}, (_, i) => [2 + i * 1e-5, 0])');
   // It was one task of 110 to 160 s: looking up 10⁵ column names in a list of 3·10⁵, for every view. Columns are
-  // found by a map now, and the views draw an even sample (tests/unit/plots/plane-columns.test.ts, on 10⁵
+  // found by a map now, and the views draw an even sample (tests/unit/widgets/plots/plane-columns.test.ts, on 10⁵
   // trajectories); here the start must come within the wait's limit, which only a hang exceeds.
   await page.waitForFunction(
     (selector) => document.querySelector(selector)?.simulator?.simulation?.count === 100000 && document.querySelector(selector).hasAttribute('data-ready'),

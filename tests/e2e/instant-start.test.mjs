@@ -1,6 +1,6 @@
 /**
  * Instant start: what the build did ahead (compiled models, typeset
- * equations; book/page-data.ts) lets every chapter run without its heavy
+ * equations; chapter/models/page-data.ts) lets every chapter run without its heavy
  * modules, and nothing depends on it being there.
  *
  * - Reading a chapter through, however long, requests none of mathjs,
@@ -242,7 +242,7 @@ describe('a new H in any chapter is compiled on the page, and the simulator foll
 /**
  * A link to a place in a chapter (`/kepler/#cell-stars`): the page shows that
  * place from its first paint, and a link to a simulator asks for the
- * simulator's modules from the head (src/lib/linked-preloads.mjs), not once
+ * simulator's modules from the head (site/lib/linked-preloads.mjs), not once
  * the boot script has arrived and run. Both are checked with the boot script
  * held back: whatever happens then happened without it.
  */

@@ -108,7 +108,7 @@ test('a chapter without cells loads no cell code', async () => {
   await page.close();
 });
 
-/** The chunk a script URL names (src/lib/chunks.mjs groups the book's code by what loads it together). */
+/** The chunk a script URL names (site/lib/chunks.mjs groups the book's code by what loads it together). */
 const chunkOf = (url) => new URL(url).pathname.split('/').pop().split('.')[0];
 
 test('the boot chunk imports no other chunk: everything a widget needs comes when a cell asks for it', () => {

@@ -11,10 +11,10 @@ let site;
 before(async () => (site = await openSite()));
 after(() => site?.close());
 
-/** The inspector shows numbers to 12 significant digits (widgets/cells/inspect.ts). */
+/** The inspector shows numbers to 12 significant digits (cells/inspect.ts). */
 const PERIOD_OF = (omega) => `period = ${Number(((2 * Math.PI) / omega).toPrecision(12))}`;
 
-/** The storage key of a cell's edit on this page (widgets/cells/storage.ts): the browser's secret, the page's path, the cell. */
+/** The storage key of a cell's edit on this page (cells/storage.ts): the browser's secret, the page's path, the cell. */
 const editKey = (page, id) =>
   page.evaluate((id) => `phasebook:v2:${localStorage.getItem('phasebook:v2:secret')}:${location.pathname}:edit:${id}`, id);
 

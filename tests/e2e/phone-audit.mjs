@@ -154,7 +154,7 @@ export function audit(smallest) {
  * Lets the layout settle as for a reader who has read the whole page: the
  * fonts in; every part of the page shown once, a viewport at a time, with
  * the frames in which the page marks the boxes that scroll
- * (widgets/cells/scrollables.ts: prose far from the view is not laid out
+ * (cells/scrollables.ts: prose far from the view is not laid out
  * until it comes near, global.css); then every block laid out at once, so
  * that the audit can measure them all.
  * @param {import('playwright-core').Page} page

@@ -1,5 +1,5 @@
 /**
- * Shareable edits (widgets/cells/share-*.ts): a reader's edits travel in a
+ * Shareable edits (cells/share-*.ts): a reader's edits travel in a
  * link's fragment to a fresh browser, which shows them marked and runs none
  * of their code until asked; Back to the original leaves them; Keep these
  * edits asks before replacing the reader's own; a damaged link is a message

@@ -30,7 +30,7 @@ export function expectedVerdict({ valid, reference, predicted, formula, slack, r
   return 'ambiguous';
 }
 
-/** "≪ 1" as the book reads it (widgets/book/check-verdict.ts): at most a third. */
+/** "≪ 1" as the book reads it (widgets/chapter/theory-check/check-verdict.ts): at most a third. */
 export const SMALL = 1 / 3;
 
 /**

@@ -2,9 +2,9 @@
  * An esbuild plugin that lets the extension's browser bundles import the
  * book's modules as they are:
  *
- * - `node:crypto`, which src/lib/remark-cells.mjs imports to hash cell
+ * - `node:crypto`, which site/lib/remark-cells.mjs imports to hash cell
  *   sources, becomes a small stand-in (src/shims/node-crypto.ts);
- * - src/lib/precompile.ts, the build's headless run of the cells, which
+ * - site/lib/precompile.ts, the build's headless run of the cells, which
  *   remark-cells.mjs imports but the extension never calls, is marked free
  *   of side effects so that it (and mathjs, KaTeX and acorn with it) stays
  *   out of the bundles unless something really uses it.

@@ -1,6 +1,6 @@
 /**
  * Generates the builtins' catalogue (src/analyzer/catalogue.ts) from the
- * book's TypeScript: the entries of `createLibrary` in widgets/library.ts,
+ * book's TypeScript: the entries of `createLibrary` in widgets/catalogue.ts,
  * each with the comment above it, the signature of the value it loads and,
  * for parameters that are options objects, their properties with their own
  * doc comments and types (nested options objects included). Nothing is
@@ -105,7 +105,7 @@ function libraryObject(source: ts.SourceFile): ts.ObjectLiteralExpression {
 
 /** The catalogue of the book whose root folder is `root`. */
 export function generateCatalogue(root: string): Catalogue {
-  const file = path.join(root, 'widgets', 'library.ts');
+  const file = path.join(root, 'widgets', 'catalogue.ts');
   const program = ts.createProgram([file], {
     target: ts.ScriptTarget.ES2022,
     module: ts.ModuleKind.ESNext,

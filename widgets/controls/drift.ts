@@ -1,4 +1,4 @@
-import { relativeChange, type RecordLayout, type TrajectoryRecord } from '../core/index.ts';
+import { relativeChange, type RecordLayout, type TrajectoryRecord } from '../../core/index.ts';
 
 /**
  * The energy drift |H − H₀| / |H₀| of the readouts. H₀ is taken from the

@@ -3,7 +3,7 @@
  * reader and no value, so the control can keep its old value and say why.
  */
 
-import { MAX_DT, MIN_DT } from '../core/index.ts';
+import { MAX_DT, MIN_DT } from '../../core/index.ts';
 
 export type Parsed = { value: number; error?: undefined } | { value?: undefined; error: string };
 

@@ -1,4 +1,4 @@
-import type { Simulation } from '../core/index.ts';
+import type { Simulation } from '../../core/index.ts';
 import { h } from './dom.ts';
 import { DriftTracker } from './drift.ts';
 import { formatDrift, formatTime, readoutNumber } from './format.ts';

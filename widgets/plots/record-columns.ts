@@ -1,4 +1,4 @@
-import type { RecordLayout } from '../core/index.ts';
+import type { RecordLayout } from '../../core/index.ts';
 import type { Extent } from './extent.ts';
 import { spread } from './series.ts';
 

@@ -1,4 +1,4 @@
-import type { RecordLayout } from '../core/index.ts';
+import type { RecordLayout } from '../../core/index.ts';
 
 /**
  * Which record columns a time plot draws, grouped into legend entries: one

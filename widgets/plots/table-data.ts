@@ -1,4 +1,4 @@
-import type { TrajectoryRecord } from '../core/index.ts';
+import type { TrajectoryRecord } from '../../core/index.ts';
 import { readoutNumber } from '../controls/format.ts';
 
 /**

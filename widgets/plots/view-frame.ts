@@ -1,8 +1,7 @@
 import { pixelRatio } from './canvas.ts';
-import { watchTheme } from './theme.ts';
+import { watchTheme, readTheme, sameTheme, type Theme } from './theme.ts';
 import { PlotTable } from './plot-table.ts';
 import type { TableData } from './table-data.ts';
-import { readTheme, sameTheme, type Theme } from './theme.ts';
 
 /** An offscreen canvas kept at the frame's size, with its context scaled to CSS pixels. */
 export interface Layer {

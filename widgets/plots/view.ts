@@ -1,4 +1,4 @@
-import type { Simulation } from '../core/index.ts';
+import type { Simulation } from '../../core/index.ts';
 
 /**
  * What every plot of a running simulation implements. The driver calls

@@ -4,7 +4,7 @@
  * the model rebuilt from its source (portable-model.ts), advanced in slices of bounded
  * time and bytes, each slice one chunk.
  */
-import { type BlowUpError, type Model, Simulation } from '../core/index.ts';
+import { type BlowUpError, type Model, Simulation } from '../../core/index.ts';
 import type { Chunk, StartRequest } from './chunk-protocol.ts';
 import { modelFromPortable, type PortableModel } from './portable-model.ts';
 

@@ -1,4 +1,4 @@
-import { MAX_SPEED, outside, type Simulation } from '../core/index.ts';
+import { MAX_SPEED, outside, type Simulation } from '../../core/index.ts';
 import { carryOver, DEFAULT_BUDGET, integrateFrame, owedSteps, type Budget } from './frame-budget.ts';
 import type { View } from '../plots/view.ts';
 import type { WorkerIntegrator } from './worker-integrator.ts';

@@ -1,8 +1,8 @@
-import type { Model, Simulation } from '../core/index.ts';
+import type { Model, Simulation } from '../../core/index.ts';
 import { h, prefersReducedMotion } from '../controls/dom.ts';
 import { Readouts } from '../controls/readouts.ts';
 import { Transport } from '../controls/transport.ts';
-import { DataPanel } from '../data/data-panel.ts';
+import { DataPanel } from '../exports/data-panel.ts';
 import { Driver } from './driver.ts';
 import { Notices } from './notices.ts';
 import type { View } from '../plots/view.ts';

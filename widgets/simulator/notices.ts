@@ -1,4 +1,4 @@
-import type { Simulation } from '../core/index.ts';
+import type { Simulation } from '../../core/index.ts';
 import { h } from '../controls/dom.ts';
 import { readoutNumber } from '../controls/format.ts';
 

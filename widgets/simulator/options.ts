@@ -1,7 +1,7 @@
 import {
   applyMethod, canonicalEquations, capacityFor, DEFAULT_METHOD, firstEvaluation, InputError, MAX_BATCH, MAX_DOF, MAX_DT, MAX_SPEED, methodChoice, MIN_DT, outside,
   Simulation, type BuildOptions, type DerivedSeries, type HamiltonianSpec, type MethodChoice, type Model,
-} from '../core/index.ts';
+} from '../../core/index.ts';
 import type { PhasePortraitOptions } from '../plots/plane/phase-portrait.ts';
 import type { SpectrumViewOptions } from '../plots/spectrum/spectrum-view.ts';
 import type { TimePlotOptions } from '../plots/time/time-plot.ts';

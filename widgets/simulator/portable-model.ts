@@ -9,7 +9,7 @@
  * The generated functions are recognised by their signatures, whose `$`
  * names no user code can declare (expression/names.ts reserves them).
  */
-import type { HamiltonianFunction, Model, Stepper } from '../core/index.ts';
+import type { HamiltonianFunction, Model, Stepper } from '../../core/index.ts';
 
 export interface PortableModel {
   dof: number;

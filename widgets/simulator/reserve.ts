@@ -1,6 +1,6 @@
 /**
  * The space a simulator will take, as markup the build puts where the widget
- * will appear (src/lib/precompile.ts). The page shows it until the widget
+ * will appear (site/lib/precompile.ts). The page shows it until the widget
  * replaces it, so a simulator that appears while the reader looks moves
  * nothing under it.
  *
@@ -11,7 +11,7 @@
  * (plots/sizes.ts) written in CSS on the width of `.pb-views`, a size
  * container. No DOM here: the build runs it in Node.
  */
-import type { Model } from '../core/index.ts';
+import type { Model } from '../../core/index.ts';
 import { phasePairs } from '../plots/record-columns.ts';
 import { heightCss, PHASE_MULTIPLE, PHASE_PANEL, SPECTRUM_PLOT, timePlotHeight, TRAJECTORY_PANEL, type Proportional } from '../plots/sizes.ts';
 import { readoutLines } from '../plots/spectrum/spectrum-readout.ts';
@@ -96,7 +96,7 @@ function viewHtml(view: ReservedView): string {
 /**
  * The reserved box: the simulator's frame with its rows and plots, empty,
  * and a word on what is coming. It names the views, so that the page can
- * fetch their modules with the simulator's (library.ts, prefetchWidgets).
+ * fetch their modules with the simulator's (catalogue.ts, prefetchWidgets).
  */
 export function reserveHtml(plan: SimulatorPlan): string {
   const views = plan.views.map((v) => v.kind).join(' ');

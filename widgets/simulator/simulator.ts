@@ -1,4 +1,4 @@
-import type { BuildOptions } from '../core/index.ts';
+import type { BuildOptions } from '../../core/index.ts';
 import type { View } from '../plots/view.ts';
 import { mount, type SimulatorElement } from './mount.ts';
 import { parseSimulatorOptions, type SimulatorOptions, type ViewName, type ViewOptions } from './options.ts';

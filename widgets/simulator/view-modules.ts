@@ -1,7 +1,7 @@
 /**
  * Where each view of a simulator lives. A simulator loads the modules of
  * the views it shows; the page may ask for them earlier, as soon as it knows
- * a simulator is coming (library.ts, prefetchWidgets), so that they arrive
+ * a simulator is coming (catalogue.ts, prefetchWidgets), so that they arrive
  * together with the simulator's own module rather than after it.
  */
 import type { ViewName } from './options.ts';

@@ -12,7 +12,7 @@
  * whenever it cannot be used (no Worker, a policy that blocks it, a model it
  * fails to build), the driver integrates on the page as before.
  */
-import { BlowUpError, type Simulation } from '../core/index.ts';
+import { BlowUpError, type Simulation } from '../../core/index.ts';
 import { ChunkQueue, lookaheadTarget, type StartRequest, type WorkerReply, type WorkerRequest } from './chunk-protocol.ts';
 import type { Budget } from './frame-budget.ts';
 import { hamiltonianTravels, portableModel } from './portable-model.ts';

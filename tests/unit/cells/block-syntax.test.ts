@@ -1,5 +1,5 @@
 import { describe, expect, test } from 'vitest';
-import { asParsableBlock, blockAssignmentAt } from '../../../widgets/cells/block-syntax.ts';
+import { asParsableBlock, blockAssignmentAt } from '../../../cells/block-syntax.ts';
 
 describe('blockAssignmentAt(source)', () => {
   test('finds the = of a named block cell', () => {

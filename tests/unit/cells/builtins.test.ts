@@ -1,5 +1,5 @@
 import { describe, expect, test, vi } from 'vitest';
-import { createBuiltins, loadedDefinition, plainDefinition } from '../../../widgets/cells/builtins.ts';
+import { createBuiltins, loadedDefinition, plainDefinition } from '../../../cells/builtins.ts';
 
 describe('builtin definitions', () => {
   test('wrap a plain value, functions included, so the runtime does not call it', () => {

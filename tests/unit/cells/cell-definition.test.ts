@@ -1,8 +1,8 @@
 import { describe, expect, test } from 'vitest';
 import { parseCell } from '@observablehq/parser';
-import { cellBody, compileCell } from '../../../widgets/cells/cell-definition.ts';
-import { describeCell, formatError, type CellSpec } from '../../../widgets/cells/spec.ts';
-import { LoopGuard, LoopStopped } from '../../../widgets/cells/loop-guard.ts';
+import { cellBody, compileCell } from '../../../cells/cell-definition.ts';
+import { describeCell, formatError, type CellSpec } from '../../../cells/spec.ts';
+import { LoopGuard, LoopStopped } from '../../../cells/loop-guard.ts';
 
 function specOf(source: string): CellSpec {
   return describeCell(parseCell(source));

@@ -1,6 +1,6 @@
 import { afterEach, beforeEach, describe, expect, test, vi } from 'vitest';
-import { DraftKeeper, type SaveProblem } from '../../../widgets/cells/drafts.ts';
-import { EditStore } from '../../../widgets/cells/storage.ts';
+import { DraftKeeper, type SaveProblem } from '../../../cells/drafts.ts';
+import { EditStore } from '../../../cells/storage.ts';
 
 function memoryStorage(): Storage {
   const items = new Map<string, string>();

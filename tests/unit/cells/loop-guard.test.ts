@@ -1,14 +1,14 @@
 /**
- * The loop guard's accounting (widgets/cells/loop-guard.ts): time is charged
+ * The loop guard's accounting (cells/loop-guard.ts): time is charged
  * to a cell across microtasks, until the task ends, and cell by cell.
  * Clocks and task ends are driven by hand, so nothing here depends on how
  * fast the machine is.
  */
 import { parseCell } from '@observablehq/parser';
 import { describe, expect, test } from 'vitest';
-import { compileCell } from '../../../widgets/cells/cell-definition.ts';
-import { LoopGuard, LoopStopped, type AfterTask } from '../../../widgets/cells/loop-guard.ts';
-import { describeCell } from '../../../widgets/cells/spec.ts';
+import { compileCell } from '../../../cells/cell-definition.ts';
+import { LoopGuard, LoopStopped, type AfterTask } from '../../../cells/loop-guard.ts';
+import { describeCell } from '../../../cells/spec.ts';
 
 /** A clock that moves `step` ms each time it is read. */
 function ticking(step = 1) {

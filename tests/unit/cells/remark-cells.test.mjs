@@ -1,5 +1,5 @@
 import { describe, expect, test } from 'vitest';
-import { assignCellIds, hashSource, remarkCells } from '../../../src/lib/remark-cells.mjs';
+import { assignCellIds, hashSource, remarkCells } from '../../../site/lib/remark-cells.mjs';
 
 /** Runs the plugin on a hand-made tree of fenced code blocks. */
 async function transform(fences) {
@@ -108,7 +108,7 @@ describe('assignCellIds(cells)', () => {
 
 describe('highlightJs(source)', () => {
   test('highlights a named block cell as a block, not an object literal', async () => {
-    const { highlightJs } = await import('../../../src/lib/highlight-js.mjs');
+    const { highlightJs } = await import('../../../site/lib/highlight-js.mjs');
     const nodes = highlightJs('x = {\n  return 1;\n}');
     const returnNode = nodes.find((node) => node.type === 'element' && node.children[0].value === 'return');
     expect(returnNode.properties.className).toEqual(['tok-keyword']);

@@ -1,12 +1,12 @@
 /**
- * The sandbox's decisions that need no page (widgets/cells/sandbox/):
+ * The sandbox's decisions that need no page (cells/sandbox/):
  * allocation bounds, reload-loop detection, where a navigation may go, and
  * how many history entries a cell may add.
  */
 import { describe, expect, test } from 'vitest';
-import { allocationScope, arrayRefusal, bufferRefusal, MAX_ARRAY_LENGTH, MAX_BUFFER_BYTES } from '../../../widgets/cells/sandbox/allocation.ts';
-import { editsKey, loopTurns, selfLoadNote, type ThisLoad } from '../../../widgets/cells/sandbox/reload-loop.ts';
-import { forbiddenDestination, HISTORY_BURST, HISTORY_WINDOW_MS, HistoryBudget } from '../../../widgets/cells/sandbox/navigation.ts';
+import { allocationScope, arrayRefusal, bufferRefusal, MAX_ARRAY_LENGTH, MAX_BUFFER_BYTES } from '../../../cells/sandbox/allocation.ts';
+import { editsKey, loopTurns, selfLoadNote, type ThisLoad } from '../../../cells/sandbox/reload-loop.ts';
+import { forbiddenDestination, HISTORY_BURST, HISTORY_WINDOW_MS, HistoryBudget } from '../../../cells/sandbox/navigation.ts';
 
 describe('allocation bounds', () => {
   test('say the size asked for and the bound', () => {

@@ -1,3 +1,4 @@
+import { readFileSync } from 'node:fs';
 import { describe, expect, test } from 'vitest';
 import {
   decodeShare,
@@ -7,8 +8,8 @@ import {
   SHARE_VERSION,
   toBase64Url,
   type SharedEdits,
-} from '../../../widgets/cells/share-format.ts';
-import { isShareFragment } from '../../../widgets/cells/share-fragment.ts';
+} from '../../../cells/share-format.ts';
+import { isShareFragment } from '../../../cells/share-fragment.ts';
 
 /** The fragment of a wire object, packed as encodeShare packs one, but with any content (for malformed cases). */
 async function pack(wire: unknown, version = SHARE_VERSION): Promise<string> {
@@ -54,7 +55,13 @@ describe('encodeShare / decodeShare', () => {
     expect([...fromBase64Url(toBase64Url(bytes))]).toEqual([...bytes]);
   });
 
-  test('links of typical edits stay far under 2000 characters', async () => {
+  test('links of typical edits are as long as the README says, far under 2000 characters', async () => {
+    // The README's promise (its "Share your edits" paragraph), read from it, so that the two cannot drift apart.
+    const readme = readFileSync(new URL('../../../README.md', import.meta.url), 'utf8').replace(/\s+/g, ' ');
+    const said = readme.match(/on a (\d+)-character page address, (\d+) for one changed parameter cell, (\d+) for one changed H, (\d+) for an added cell, (\d+) for all three/);
+    expect(said, 'the README quotes the lengths of typical links').not.toBeNull();
+    const [pageUrlLength, ...documented] = said!.slice(1).map(Number);
+    expect(PAGE_URL.length).toBe(pageUrlLength);
     const lengths: Record<string, number> = {};
     const cases: Record<string, SharedEdits['cells']> = {
       'one parameter cell': [sample.cells[1]],
@@ -66,11 +73,13 @@ describe('encodeShare / decodeShare', () => {
       lengths[name] = `${PAGE_URL}#${await encodeShare({ chapter: 'playground', cells })}`.length;
       expect(lengths[name]).toBeLessThan(2000);
     }
+    // Exact, as documented: deflate's output for a given input is fixed by zlib's level and strategy, and a
+    // change of a single byte in what a link carries (a field added, a longer version tag) moves the length.
+    expect(Object.values(lengths)).toEqual(documented);
     // Packing earns its keep: shorter than the same JSON escaped for a URL, the alternative that needs no code.
     const all = await encodeShare({ chapter: 'playground', cells: sample.cells.slice(0, 3) });
     const json = JSON.stringify({ c: 'playground', e: sample.cells.slice(0, 3).map((c) => [c.id, c.source, 'x'.repeat(12)]) });
     expect(all.length).toBeLessThan(encodeURIComponent(json).length);
-    console.log('share link lengths (characters, with a 61-character page URL):', lengths);
   });
 });
 

@@ -1,8 +1,8 @@
 import { describe, expect, test } from 'vitest';
-import { DraftKeeper } from '../../../widgets/cells/drafts.ts';
-import type { SharedEdits } from '../../../widgets/cells/share-format.ts';
-import { keepShared, markSharedRun, MemoryStorage, ownEdits, planShared, sharedStore } from '../../../widgets/cells/share-session.ts';
-import { EditStore } from '../../../widgets/cells/storage.ts';
+import { DraftKeeper } from '../../../cells/drafts.ts';
+import type { SharedEdits } from '../../../cells/share-format.ts';
+import { keepShared, markSharedRun, MemoryStorage, ownEdits, planShared, sharedStore } from '../../../cells/share-session.ts';
+import { EditStore } from '../../../cells/storage.ts';
 
 const page = [
   { id: 'H', hash: 'aaaaaaaaaaaa' },

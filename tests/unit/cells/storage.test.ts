@@ -1,6 +1,6 @@
 import { describe, expect, test } from 'vitest';
-import { recoverText } from '../../../widgets/cells/recovery.ts';
-import { EditStore } from '../../../widgets/cells/storage.ts';
+import { recoverText } from '../../../cells/recovery.ts';
+import { EditStore } from '../../../cells/storage.ts';
 
 /** An in-memory Storage; `fail` makes writes (or every call) throw as a full or forbidden localStorage does. */
 function memoryStorage(fail: 'none' | 'forbidden' | 'full' = 'none'): Storage {

@@ -1,6 +1,6 @@
 /**
  * templates/chapter.mdx, the chapter teachers copy into content/: its front
- * matter has the fields src/content.config.ts requires, and every code cell
+ * matter has the fields site/content.config.ts requires, and every code cell
  * parses, so a copy builds and runs as it stands. (The page /for-teachers/
  * renders the template live, so the e2e suite runs its cells too.)
  */
@@ -24,7 +24,7 @@ function frontMatter(text: string): Record<string, string> {
   return fields;
 }
 
-/** The sources of the ```js cell blocks, as src/lib/remark-cells.mjs finds them. */
+/** The sources of the ```js cell blocks, as site/lib/remark-cells.mjs finds them. */
 function cells(text: string): string[] {
   const found: string[] = [];
   const fence = /^```js[ \t]+([^\n]*)\n([\s\S]*?)^```[ \t]*$/gm;

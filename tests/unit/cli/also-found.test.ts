@@ -10,8 +10,8 @@ import { mkdirSync, mkdtempSync, readdirSync, readFileSync, writeFileSync } from
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import { main } from '../../../widgets/cli/main.ts';
-import { parseCSV } from '../../../widgets/core/csv-read.ts';
+import { main } from '../../../cli/main.ts';
+import { parseCSV } from '../../../core/tables/csv-read.ts';
 import { captureWrites, useScratchCache } from '../support/cli-harness.ts';
 
 let dir: string;

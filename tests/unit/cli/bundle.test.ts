@@ -1,6 +1,6 @@
 /**
  * bin/phasebook.mjs and cli-bundle.mjs on a stand-in project: a copy of bin/
- * beside a two-file widgets/cli/, so that sources can be edited without
+ * beside a two-file cli/, so that sources can be edited without
  * touching the real ones. The launcher must never run code older than the
  * sources, whatever state build/cli/ is in.
  */
@@ -16,9 +16,9 @@ const run = promisify(execFile);
 let root: string;
 let outDir: string;
 
-/** widgets/cli/main.ts printing what words.ts says, as the real entry's shape: main(argv) → exit status. */
+/** cli/main.ts printing what words.ts says, as the real entry's shape: main(argv) → exit status. */
 function writeSources(word: string): void {
-  writeFileSync(join(root, 'widgets/cli/words.ts'), `export const word: string = ${JSON.stringify(word)};\n`);
+  writeFileSync(join(root, 'cli/words.ts'), `export const word: string = ${JSON.stringify(word)};\n`);
 }
 
 beforeEach(() => {
@@ -27,9 +27,9 @@ beforeEach(() => {
   cpSync(join(ROOT, 'bin'), join(root, 'bin'), { recursive: true });
   symlinkSync(join(ROOT, 'node_modules'), join(root, 'node_modules'), 'dir');
   writeFileSync(join(root, 'package.json'), '{ "type": "module" }\n');
-  mkdirSync(join(root, 'widgets/cli'), { recursive: true });
+  mkdirSync(join(root, 'cli'), { recursive: true });
   writeFileSync(
-    join(root, 'widgets/cli/main.ts'),
+    join(root, 'cli/main.ts'),
     `import { word } from './words.ts';\nexport async function main(argv: readonly string[]): Promise<number> {\n  process.stdout.write(word + ' ' + argv.join(' ') + '\\n');\n  return 3;\n}\n`,
   );
   writeSources('first');
@@ -69,7 +69,7 @@ describe('bin/phasebook.mjs', () => {
 describe('freshEntry(outDir, root)', () => {
   it('calls the bundle stale when a source changes size even with an old time, or disappears, or the manifest is damaged', async () => {
     await launch();
-    const words = join(root, 'widgets/cli/words.ts');
+    const words = join(root, 'cli/words.ts');
     const { mtime } = statSync(words);
     writeSources('a different length');
     utimesSync(words, mtime, mtime);

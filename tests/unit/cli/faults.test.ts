@@ -25,8 +25,8 @@ import { tmpdir } from 'node:os';
 import { dirname, join } from 'node:path';
 import { afterEach, beforeAll, beforeEach, describe, expect, it } from 'vitest';
 import { ensureCli, ROOT } from '../../../bin/cli-bundle.mjs';
-import { pidSpace } from '../../../widgets/cli/partial-file.ts';
-import { parseCSV } from '../../../widgets/core/csv-read.ts';
+import { pidSpace } from '../../../cli/output/partial-file.ts';
+import { parseCSV } from '../../../core/tables/csv-read.ts';
 
 const BIN = join(ROOT, 'bin/phasebook.mjs');
 const OSCILLATOR = ['simulate', '--hamiltonian', 'p^2/2 + q^2/2', '--dof', '1', '--initial', '1,0'];

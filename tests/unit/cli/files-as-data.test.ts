@@ -11,7 +11,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterEach, beforeAll, beforeEach, describe, expect, it } from 'vitest';
 import { ensureCli, ROOT } from '../../../bin/cli-bundle.mjs';
-import { parseJSON, toJSON } from '../../../widgets/core/index.ts';
+import { parseJSON, toJSON } from '../../../core/index.ts';
 
 const BIN = join(ROOT, 'bin/phasebook.mjs');
 

@@ -10,7 +10,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterEach, beforeAll, beforeEach, describe, expect, it } from 'vitest';
 import { ensureCli, ROOT } from '../../../bin/cli-bundle.mjs';
-import { parseCSV } from '../../../widgets/core/csv-read.ts';
+import { parseCSV } from '../../../core/tables/csv-read.ts';
 
 const BIN = join(ROOT, 'bin/phasebook.mjs');
 const RUN = ['simulate', '--dof', '1', '--t-end', '0.01', '--every', '10'];
@@ -65,7 +65,7 @@ describe('--initial-file as RFC 4180 CSV', () => {
   });
 
   it('refuses what RFC 4180 does not allow, or a number outside the grammar, naming the file and the line, in one line', async () => {
-    // The records and the numbers are the core's one CSV reader's (tests/unit/core/readers.test.ts).
+    // The records and the numbers are the core's one CSV reader's (tests/unit/core/tables/readers.test.ts).
     const file = join(scratch, 'initial.csv');
     writeFileSync(file, 'q,p\n1,"0\n2,0\n');
     refused(await phasebook([...OSCILLATOR, '--initial-file', file]), /^phasebook: --initial-file initial\.csv line 2: a quoted field opens here and is never closed\n$/);

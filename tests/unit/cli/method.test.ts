@@ -9,8 +9,8 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { promisify } from 'node:util';
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import { main } from '../../../widgets/cli/main.ts';
-import { parseJSON } from '../../../widgets/core/index.ts';
+import { main } from '../../../cli/main.ts';
+import { parseJSON } from '../../../core/index.ts';
 import { captureWrites, useScratchCache } from '../support/cli-harness.ts';
 
 const PENDULUM = ['--hamiltonian', 'p^2/2 - cos(q)', '--dof', '1', '--initial', '2,0'];

@@ -10,7 +10,7 @@ import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { beforeAll, beforeEach, describe, expect, it } from 'vitest';
 import { ensureCli, freshEntry, OUT_DIR, ROOT } from '../../../bin/cli-bundle.mjs';
-import { parseCSV } from '../../../widgets/core/csv-read.ts';
+import { parseCSV } from '../../../core/tables/csv-read.ts';
 
 const BIN = join(ROOT, 'bin/phasebook.mjs');
 const HOOK = join(import.meta.dirname, '../support/record-loads.mjs');

@@ -1,5 +1,5 @@
 import { describe, expect, it, vi } from 'vitest';
-import { progressBar } from '../../../widgets/cli/progress.ts';
+import { progressBar } from '../../../cli/progress.ts';
 
 function fakeStream(isTTY: boolean) {
   const writes: string[] = [];

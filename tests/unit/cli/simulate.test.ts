@@ -4,11 +4,11 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { promisify } from 'node:util';
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import { main } from '../../../widgets/cli/main.ts';
-import { canonicalEquations } from '../../../widgets/core/canonical-equations.ts';
-import { parseCSV } from '../../../widgets/core/csv-read.ts';
-import { parseJSON } from '../../../widgets/core/index.ts';
-import { Simulation } from '../../../widgets/core/simulation.ts';
+import { main } from '../../../cli/main.ts';
+import { canonicalEquations } from '../../../core/model/canonical-equations.ts';
+import { parseCSV } from '../../../core/tables/csv-read.ts';
+import { parseJSON } from '../../../core/index.ts';
+import { Simulation } from '../../../core/simulation.ts';
 import { captureWrites, useScratchCache } from '../support/cli-harness.ts';
 
 const run = promisify(execFile);

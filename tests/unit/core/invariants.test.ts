@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { canonicalEquations } from '../../../widgets/core/canonical-equations.ts';
-import { evaluateAlong, relativeDrift } from '../../../widgets/core/invariants.ts';
-import { Simulation } from '../../../widgets/core/simulation.ts';
+import { canonicalEquations } from '../../../core/model/canonical-equations.ts';
+import { evaluateAlong, relativeDrift } from '../../../core/invariants.ts';
+import { Simulation } from '../../../core/simulation.ts';
 
 describe('invariants', () => {
   it('relativeDrift(values) is max |I − I0| / |I0|, and absolute when I0 = 0', () => {

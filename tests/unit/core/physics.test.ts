@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { canonicalEquations } from '../../../widgets/core/canonical-equations.ts';
-import { relativeDrift } from '../../../widgets/core/invariants.ts';
-import { Simulation } from '../../../widgets/core/simulation.ts';
-import { findPeaks, spectrum } from '../../../widgets/core/index.ts';
+import { canonicalEquations } from '../../../core/model/canonical-equations.ts';
+import { relativeDrift } from '../../../core/invariants.ts';
+import { Simulation } from '../../../core/simulation.ts';
+import { findPeaks, spectrum } from '../../../core/index.ts';
 
 /** The paper's Kepler model (section 7.1, with the p2³ typo read as p2²). */
 const KEPLER = 'p0^2 + p1^2 + p2^2 + p3^2 - 500/sqrt((q0-q2)^2 + (q1-q3)^2)';

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { TrajectoryRecord, bytesFor, capacityFor } from '../../../widgets/core/record.ts';
+import { TrajectoryRecord, bytesFor, capacityFor } from '../../../core/record.ts';
 
 /** Deterministic PRNG (mulberry32) so failures reproduce. */
 function rng(seed: number): () => number {

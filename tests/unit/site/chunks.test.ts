@@ -1,9 +1,11 @@
+import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
-import { bookChunks, groupOf } from '../../../src/lib/chunks.mjs';
+import { bookChunks, groupOf } from '../../../site/lib/chunks.mjs';
 
-const at = (path: string) => `/repo/${path}`;
+/** A module id as Rollup gives it: the absolute path of a file in this project. */
+const at = (path: string) => fileURLToPath(new URL(`../../../${path}`, import.meta.url));
 
-describe('src/lib/chunks.mjs: what loads together', () => {
+describe('site/lib/chunks.mjs: what loads together', () => {
   it('groupOf puts each part of the book with what loads it', () => {
     const expected: Record<string, string | undefined> = {
       'node_modules/d3-scale/dist/d3-scale.mjs': 'plots',
@@ -14,27 +16,27 @@ describe('src/lib/chunks.mjs: what loads together', () => {
       'widgets/plots/plane/phase-portrait.ts': 'plane-views',
       'widgets/plots/spectrum/spectrum-view.ts': 'spectrum',
       'node_modules/fft.js/lib/fft.js': 'spectrum',
-      'widgets/core/window.ts': 'spectrum',
+      'core/spectrum/window.ts': 'spectrum',
       'widgets/simulator/driver.ts': 'simulator',
       'widgets/controls/transport.ts': 'simulator',
       'widgets/simulator/worker-integrator.ts': 'worker-integrator',
       'widgets/simulator/portable-model.ts': 'worker-integrator',
-      'widgets/data/export.ts': 'export',
-      'widgets/core/canonical-equations.ts': 'model',
-      'widgets/core/integrators/dormand-prince.ts': 'model',
-      'widgets/core/expression/names.ts': 'model',
-      'widgets/core/expression/compile-expression.ts': 'compiler',
-      'widgets/core/js-function/translate.ts': 'compiler',
-      'widgets/core/record.ts': 'core',
-      'widgets/core/analysis/kepler.ts': 'analysis',
-      'widgets/book/chart-scale.ts': 'chart',
-      'widgets/book/check-verdict.ts': 'theory-check',
-      'widgets/book/typeset.ts': 'tex',
-      'widgets/book/section-systems.ts': 'poincare-section',
-      'widgets/book/method-comparison-run.ts': 'method-comparison',
+      'widgets/exports/export.ts': 'export',
+      'core/model/canonical-equations.ts': 'model',
+      'core/integrators/dormand-prince.ts': 'model',
+      'core/expression/names.ts': 'model',
+      'core/expression/compile-expression.ts': 'compiler',
+      'core/js-function/translate.ts': 'compiler',
+      'core/record.ts': 'core',
+      'core/analysis/kepler.ts': 'analysis',
+      'widgets/chapter/chart/chart-scale.ts': 'chart',
+      'widgets/chapter/theory-check/check-verdict.ts': 'theory-check',
+      'widgets/chapter/math/typeset.ts': 'tex',
+      'widgets/chapter/poincare-section/section-systems.ts': 'poincare-section',
+      'widgets/chapter/method-comparison/method-comparison-run.ts': 'method-comparison',
       // Rollup places these: mathjs's own chunk, and the front door, which holds no code of its own
-      'widgets/core/expression/mathjs-instance.ts': undefined,
-      'widgets/core/index.ts': undefined,
+      'core/expression/mathjs-instance.ts': undefined,
+      'core/index.ts': undefined,
       'node_modules/mathjs/lib/esm/entry/pureFunctionsAny.generated.js': undefined,
     };
     for (const [path, group] of Object.entries(expected)) expect([path, groupOf(at(path))]).toEqual([path, group]);
@@ -42,22 +44,22 @@ describe('src/lib/chunks.mjs: what loads together', () => {
 
   it('bookChunks names boot what the entry imports, following the core front door only for the names imported through it', () => {
     const modules: Record<string, { isEntry?: boolean; importedIds: string[]; exports?: string[]; code?: string }> = {
-      [at('src/entry.ts')]: { isEntry: true, importedIds: [at('widgets/cells/boot.ts')] },
-      [at('widgets/cells/boot.ts')]: { importedIds: [at('widgets/core/index.ts'), at('widgets/controls/dom.ts')], code: 'import { SUMMARY } from "../core/index.ts";' },
-      [at('widgets/core/index.ts')]: { importedIds: [at('widgets/core/summary.ts'), at('widgets/core/record.ts')] },
-      [at('widgets/core/summary.ts')]: { importedIds: [], exports: ['SUMMARY', 'withSummary'] },
-      [at('widgets/core/record.ts')]: { importedIds: [], exports: ['Record'] },
+      [at('site/entry.ts')]: { isEntry: true, importedIds: [at('cells/boot.ts')] },
+      [at('cells/boot.ts')]: { importedIds: [at('core/index.ts'), at('widgets/controls/dom.ts')], code: 'import { SUMMARY } from "../core/index.ts";' },
+      [at('core/index.ts')]: { importedIds: [at('core/summary.ts'), at('core/record.ts')] },
+      [at('core/summary.ts')]: { importedIds: [], exports: ['SUMMARY', 'withSummary'] },
+      [at('core/record.ts')]: { importedIds: [], exports: ['Record'] },
       [at('widgets/controls/dom.ts')]: { importedIds: [] },
       [at('node_modules/@codemirror/view/dist/index.js')]: { importedIds: [] },
     };
     const meta = { getModuleIds: () => Object.keys(modules)[Symbol.iterator](), getModuleInfo: (id: string) => modules[id] ?? null };
     const chunkOf = bookChunks();
-    expect(chunkOf(at('widgets/cells/boot.ts'), meta)).toBe('boot');
-    expect(chunkOf(at('widgets/core/summary.ts'), meta)).toBe('boot');
+    expect(chunkOf(at('cells/boot.ts'), meta)).toBe('boot');
+    expect(chunkOf(at('core/summary.ts'), meta)).toBe('boot');
     // used by the boot code, so boot's, though the plots' group would take it otherwise
     expect(chunkOf(at('widgets/controls/dom.ts'), meta)).toBe('boot');
     // re-exported by the front door but not imported through it by the boot code
-    expect(chunkOf(at('widgets/core/record.ts'), meta)).toBe('core');
+    expect(chunkOf(at('core/record.ts'), meta)).toBe('core');
     expect(chunkOf(at('node_modules/@codemirror/view/dist/index.js'), meta)).toBe('editor');
   });
 });

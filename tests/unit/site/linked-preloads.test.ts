@@ -7,7 +7,7 @@ import {
   simulatorChunks,
   simulatorModules,
   withLinkedPreloads,
-} from '../../../src/lib/linked-preloads.mjs';
+} from '../../../site/lib/linked-preloads.mjs';
 import { VIEW_MODULES } from '../../../widgets/simulator/view-modules.ts';
 
 /** A client bundle as chunkGraph() gives it: an entry, the boot chunk it imports, and the simulator's chunks. */
@@ -50,7 +50,7 @@ function preloadsAt(script: string, hash: string): string[] {
   return appended;
 }
 
-describe('src/lib/linked-preloads.mjs: a link to a simulator fetches its modules with the boot script', () => {
+describe('site/lib/linked-preloads.mjs: a link to a simulator fetches its modules with the boot script', () => {
   it('reads the views from widgets/simulator/view-modules.ts, every one of them, as files that exist', () => {
     const { simulator, views } = simulatorModules();
     expect(Object.keys(views).sort()).toEqual(Object.keys(VIEW_MODULES).sort());

@@ -1,12 +1,11 @@
 /**
  * Every name a cell may read without a cell defining it, as the page
- * resolves names (widgets/cells/builtins.ts, runtime.ts): the book's
+ * resolves names (cells/builtins.ts, runtime.ts): the book's
  * catalogue, the standard JavaScript and browser globals, Math's members by
  * bare name, `html`, `width` and `now`, and the two names the Observable
  * runtime itself gives every cell.
  */
-import { createBuiltins } from '../../../widgets/cells/builtins.ts';
-import { BROWSER_GLOBALS, JAVASCRIPT_GLOBALS, mathByName } from '../../../widgets/cells/globals.ts';
+import { createBuiltins, BROWSER_GLOBALS, JAVASCRIPT_GLOBALS, mathByName } from '../../../cells/index.ts';
 import type { Catalogue } from './catalogue.ts';
 
 /** @observablehq/runtime's own builtins (src/module.js): a promise that resolves when the cell is redefined, and one for when it is in view. */

@@ -2,7 +2,7 @@
  * The shape of the builtins' catalogue: what a cell can name without
  * defining it, with the documentation and option types the book's own
  * TypeScript declares. vscode/build/catalogue.ts writes it at build time
- * from widgets/library.ts, so completion and hover never drift from the code.
+ * from widgets/catalogue.ts, so completion and hover never drift from the code.
  */
 
 /** One option of an options object (a property of its type). */
@@ -27,7 +27,7 @@ export interface CatalogueParameter {
 
 export interface CatalogueEntry {
   readonly name: string;
-  /** The comment above the entry in widgets/library.ts. */
+  /** The comment above the entry in widgets/catalogue.ts. */
   readonly doc: string;
   /** `function`: a cell calls it; `class`: a cell writes `new Name(…)`; `value`: anything else. */
   readonly kind: 'function' | 'class' | 'value';

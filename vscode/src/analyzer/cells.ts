@@ -1,12 +1,12 @@
 /**
  * A chapter's cells, found and parsed by the book's own code
- * (src/lib/remark-cells.mjs: the fences it turns into cells, the source it
+ * (site/lib/remark-cells.mjs: the fences it turns into cells, the source it
  * hands the page, its parse and the ids the page gives them), placed in the
  * file so that problems inside a cell point at the right character.
  */
 import type { Code, Root } from 'mdast';
-import { assignCellIds, collectCells } from '../../../src/lib/remark-cells.mjs';
-import type { CellSpec } from '../../../widgets/cells/spec.ts';
+import { assignCellIds, collectCells } from '../../../site/lib/remark-cells.mjs';
+import type { CellSpec } from '../../../cells/index.ts';
 import type { LineIndex } from './positions.ts';
 
 export interface ChapterCell {

@@ -1,10 +1,10 @@
 /**
  * The chapter's front matter checked against the book's schema
- * (src/lib/chapter-schema.ts, the one src/content.config.ts gives Astro), so
+ * (site/lib/chapter-schema.ts, the one site/content.config.ts gives Astro), so
  * a missing description or a fractional order shows while typing rather
  * than as a failed build.
  */
-import { chapterSchema } from '../../../src/lib/chapter-schema.ts';
+import { chapterSchema } from '../../../site/lib/chapter-schema.ts';
 import type { ChapterText } from './chapter-text.ts';
 import type { Problem } from './problems.ts';
 

@@ -1,6 +1,6 @@
 /**
  * The one check that needs the whole book: two chapters may not share an
- * `order` (src/lib/chapters.ts fails the build). Each chapter that shares
+ * `order` (site/lib/chapters.ts fails the build). Each chapter that shares
  * one gets a problem on its `order:` line naming the others.
  */
 import type { Problem } from './problems.ts';

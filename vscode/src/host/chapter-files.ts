@@ -1,6 +1,6 @@
 /**
  * Which files are chapters. The book makes a chapter of every `.mdx` file
- * under its top-level `content/` folder (src/content.config.ts); in a
+ * under its top-level `content/` folder (site/content.config.ts); in a
  * workspace, any `content/` folder counts, and the chapters of one folder
  * form one book, whose orders must differ.
  */

@@ -8,7 +8,7 @@ import * as vscode from 'vscode';
 import { cellAt, codeStart } from '../analyzer/cell-at.ts';
 import { optionsAt } from '../analyzer/catalogue.ts';
 import { codeContext } from '../analyzer/code-context.ts';
-import { BROWSER_GLOBALS, JAVASCRIPT_GLOBALS } from '../../../widgets/cells/globals.ts';
+import { BROWSER_GLOBALS, JAVASCRIPT_GLOBALS } from '../../../cells/index.ts';
 import { builtins, catalogue } from './catalogue-data.ts';
 import { cellMarkdown, entryMarkdown, optionMarkdown, ownerLabel } from './builtin-docs.ts';
 import type { ChapterIndex } from './chapter-index.ts';

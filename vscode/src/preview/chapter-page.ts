@@ -1,15 +1,13 @@
 /**
  * The previewed chapter in the webview: renders each new text of the
  * chapter into its blocks, gives each cell a PreviewCell in one notebook
- * with the book's builtins and widgets (widgets/library.ts, with no build
+ * with the book's builtins and widgets (widgets/catalogue.ts, with no build
  * data: models compile and formulas typeset here, as for a reader's edit),
  * and keeps every cell whose code is unchanged — its value, its widget and
  * the widget's state — across renders.
  */
-import { pageContext } from '../../../widgets/book/page-data.ts';
-import { createBuiltins } from '../../../widgets/cells/builtins.ts';
-import { currentCellSignal, Notebook } from '../../../widgets/cells/runtime.ts';
-import { createLibrary } from '../../../widgets/library.ts';
+import { pageContext, createLibrary } from '../../../widgets/index.ts';
+import { createBuiltins, currentCellSignal, Notebook } from '../../../cells/index.ts';
 import type { CellReport, CheckResult, PreviewMessage } from '../shared/messages.ts';
 import { BlockList } from './block-list.ts';
 import { readChecks } from './checks.ts';

@@ -1,6 +1,6 @@
 /**
  * Reads the theory checks a cell shows, once it has settled: the verdict and
- * numbers widgets/book/theory-check.ts writes on its element's data
+ * numbers widgets/chapter/theory-check/theory-check.ts writes on its element's data
  * attributes (the ones the book's end-to-end tests read), with its label and
  * lines. A readout without `data-verdict` (an older widget) has agreed or not.
  */

@@ -1,15 +1,12 @@
 /**
  * One cell of the preview, on the book's own parts: its markup and view
- * (widgets/cells/cell-view.ts), compiled by cell-definition.ts, defined in the page's
+ * (cells/cell-view.ts), compiled by cell-definition.ts, defined in the page's
  * notebook (runtime.ts). Unlike a reader's cell on the page it has no
  * editor and keeps no edits: its code is the chapter's, and a new version
  * of the code (the author typed) redefines the same runtime variable, so
  * the cells that read it follow.
  */
-import { compileCell } from '../../../widgets/cells/cell-definition.ts';
-import type { CellVariable, Notebook } from '../../../widgets/cells/runtime.ts';
-import { formatError } from '../../../widgets/cells/spec.ts';
-import { CellView } from '../../../widgets/cells/cell-view.ts';
+import { compileCell, type CellVariable, type Notebook, formatError, CellView } from '../../../cells/index.ts';
 import type { CellReport } from '../shared/messages.ts';
 
 type State = CellReport['state'];

@@ -2,8 +2,8 @@
  * A chapter's text rendered as the book renders it, block by block: the
  * title from the front matter, then each top-level Markdown block as HTML,
  * math typeset by KaTeX (rehype-katex, as in astro.config.mjs) and each
- * cell as the build's own markup (src/lib/remark-cells.mjs renderCell), so
- * the book's cell machinery (widgets/cells/) runs on it unchanged.
+ * cell as the build's own markup (site/lib/remark-cells.mjs renderCell), so
+ * the book's cell machinery (cells/) runs on it unchanged.
  *
  * Blocks are rendered separately, with their source lines, so that the
  * preview can keep the blocks that did not change and scroll with the
@@ -15,7 +15,7 @@ import rehypeKatex from 'rehype-katex';
 import remarkRehype from 'remark-rehype';
 import remarkSmartypants from 'remark-smartypants';
 import { unified } from 'unified';
-import { assignCellIds, collectCells, renderCell } from '../../../src/lib/remark-cells.mjs';
+import { assignCellIds, collectCells, renderCell } from '../../../site/lib/remark-cells.mjs';
 import { splitChapter } from '../analyzer/chapter-text.ts';
 import { parseChapterTree } from '../analyzer/chapter-tree.ts';
 import { LineIndex } from '../analyzer/positions.ts';

@@ -5,12 +5,12 @@
  */
 
 /**
- * A theory check's verdict (widgets/book/check-verdict.ts): `outside` when the formula's regime
+ * A theory check's verdict (widgets/chapter/theory-check/check-verdict.ts): `outside` when the formula's regime
  * does not hold, `undefined` when a value is missing.
  */
 export type CheckVerdict = 'agrees' | 'disagrees' | 'outside' | 'undefined';
 
-/** A theory check's readout, as widgets/book/theory-check.ts writes it on its element; a missing number is NaN. */
+/** A theory check's readout, as widgets/chapter/theory-check/theory-check.ts writes it on its element; a missing number is NaN. */
 export interface TheoryCheckReading {
   readonly label: string;
   readonly measured: number;

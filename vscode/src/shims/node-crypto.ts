@@ -1,6 +1,6 @@
 /**
  * Stands in for `node:crypto` in the extension's bundles, which run in a
- * web worker and a webview. src/lib/remark-cells.mjs hashes each cell's
+ * web worker and a webview. site/lib/remark-cells.mjs hashes each cell's
  * source (data-cell-hash) to recognise a reader's saved edit of an older
  * version; the preview keeps no readers' edits, so any stable hash will do:
  * FNV-1a over UTF-16 code units, in two 32-bit lanes.

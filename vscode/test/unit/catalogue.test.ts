@@ -1,7 +1,6 @@
 import { describe, expect, test } from 'vitest';
 import { optionsAt } from '../../src/analyzer/catalogue.ts';
-import { pageContext } from '../../../widgets/book/page-data.ts';
-import { createLibrary } from '../../../widgets/library.ts';
+import { pageContext, createLibrary } from '../../../widgets/index.ts';
 import { realCatalogue } from './support.ts';
 
 describe('generateCatalogue(root)', () => {

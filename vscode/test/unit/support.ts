@@ -18,7 +18,7 @@ export function readBook(relative: string): string {
 
 let catalogue: Catalogue | undefined;
 
-/** The catalogue generated from widgets/library.ts (a TypeScript program: a couple of seconds, once per file). */
+/** The catalogue generated from widgets/catalogue.ts (a TypeScript program: a couple of seconds, once per file). */
 export function realCatalogue(): Catalogue {
   return (catalogue ??= generateCatalogue(ROOT));
 }

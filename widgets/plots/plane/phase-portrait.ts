@@ -1,4 +1,4 @@
-import type { Simulation } from '../../core/index.ts';
+import type { Simulation } from '../../../core/index.ts';
 import type { View } from '../view.ts';
 import type { SignedKind } from '../scale.ts';
 import { axisTitle, batchTitle, phasePairs, toExtent, tracksOf, type ExtentOption, type Pair } from '../record-columns.ts';

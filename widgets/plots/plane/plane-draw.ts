@@ -1,4 +1,4 @@
-import type { TrajectoryRecord } from '../../core/index.ts';
+import type { TrajectoryRecord } from '../../../core/index.ts';
 import { toPixel, type Mapping } from '../scale.ts';
 import type { Panel } from './plane-panels.ts';
 import { traceRows, type Stroke } from '../trace.ts';

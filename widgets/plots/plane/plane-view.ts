@@ -1,4 +1,4 @@
-import type { Simulation } from '../../core/index.ts';
+import type { Simulation } from '../../../core/index.ts';
 import { unseen, type View } from '../view.ts';
 import type { Mapping } from '../scale.ts';
 import { drawAxes, drawLegend, leftMarginFor, MARGIN, panelLabels, type AxisReadout } from '../axes.ts';

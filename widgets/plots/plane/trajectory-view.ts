@@ -1,4 +1,4 @@
-import type { Simulation } from '../../core/index.ts';
+import type { Simulation } from '../../../core/index.ts';
 import type { View } from '../view.ts';
 import { axisTitle, batchTitle, defaultBodies, toExtent, tracksOf, type ExtentOption, type Pair } from '../record-columns.ts';
 import type { PanelSpec } from './plane-panels.ts';

@@ -1,4 +1,4 @@
-import { findPeaks, type Peak, type Spectrum, spectrum, type WindowName } from '../../core/index.ts';
+import { findPeaks, type Peak, type Spectrum, spectrum, type WindowName } from '../../../core/index.ts';
 
 /** A spectrum and its strongest peaks. */
 export interface Analysis {
@@ -16,7 +16,7 @@ const PEAK_FLOOR = 2e-3;
  * four points per resolution bin find it, and refinement does the rest.
  */
 const SEARCH_PAD = 4;
-/** DTFT evaluations per refined peak: Brent's method has converged well before (see core/peaks.ts). */
+/** DTFT evaluations per refined peak: Brent's method has converged well before (see core/spectrum/peaks.ts). */
 const EVALUATIONS = 24;
 /** Extra candidates asked of findPeaks, so that some may be dropped as leakage. */
 const SPARE = 4;

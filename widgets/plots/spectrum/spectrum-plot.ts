@@ -1,4 +1,4 @@
-import type { Peak, Spectrum } from '../../core/index.ts';
+import type { Peak, Spectrum } from '../../../core/index.ts';
 import { type AxisReadout, crisp, drawAxes, drawLegend, fontOf, leftMarginFor, type LegendItem, MARGIN, panelLabels, type Rect } from '../axes.ts';
 import { makeMapping, type Mapping, toPixel } from '../scale.ts';
 import { ColumnDecimator, traceColumns } from '../decimate.ts';

@@ -1,4 +1,4 @@
-import type { Peak } from '../../core/index.ts';
+import type { Peak } from '../../../core/index.ts';
 
 /** Lines of the readout under a spectrum listing up to `peaks` peaks (shared with simulator/reserve.ts). */
 export function readoutLines(peaks: number): number {

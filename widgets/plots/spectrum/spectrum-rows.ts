@@ -1,4 +1,4 @@
-import type { TrajectoryRecord } from '../../core/index.ts';
+import type { TrajectoryRecord } from '../../../core/index.ts';
 
 /** Which part of the record a spectrum is taken over: the latest `span` time units, a fixed [t0, t1], or all of it. */
 export type SpanOption = number | readonly [number, number];

@@ -1,4 +1,4 @@
-import type { Peak, Simulation, Spectrum, WindowName } from '../../core/index.ts';
+import type { Peak, Simulation, Spectrum, WindowName } from '../../../core/index.ts';
 import type { View } from '../view.ts';
 import { drawAxes, fontOf, type AxisReadout } from '../axes.ts';
 import { PlotTable } from '../plot-table.ts';

@@ -1,5 +1,5 @@
 import { h as el } from '../../controls/dom.ts';
-import type { Simulation } from '../../core/index.ts';
+import type { Simulation } from '../../../core/index.ts';
 import { pixelRatio } from '../canvas.ts';
 import { PlotTable, TEXT_INTERVAL_MS } from '../plot-table.ts';
 import type { SignedKind } from '../scale.ts';

@@ -1,4 +1,4 @@
-import type { TrajectoryRecord } from '../../core/index.ts';
+import type { TrajectoryRecord } from '../../../core/index.ts';
 import { fit, grow, settle } from './autoscale.ts';
 import type { Context, Surface, SurfaceFactory } from '../canvas.ts';
 import { ColumnDecimator, pendingRange, strokeColumns } from '../decimate.ts';

@@ -1,5 +1,5 @@
 import { h as el } from '../../controls/dom.ts';
-import type { TrajectoryRecord } from '../../core/index.ts';
+import type { TrajectoryRecord } from '../../../core/index.ts';
 import { type AxisReadout, drawXFrame, drawXTicks, drawYAxis, fontOf, type Rect, TICK_FONT, TIME_MARGIN, yLabelRoom } from '../axes.ts';
 import { type Context, context2d, createSurface, sizeCanvas, type Surface } from '../canvas.ts';
 import { type Domain, scaleFor, scaleLinear, type SignedKind } from '../scale.ts';

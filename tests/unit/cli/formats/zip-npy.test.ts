@@ -10,10 +10,10 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import * as zlib from 'node:zlib';
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
-import { crc32, crc32ByTable } from '../../../../widgets/cli/formats/crc32.ts';
-import { npyHeader, npyString, parseNpyHeader } from '../../../../widgets/cli/formats/npy.ts';
-import { zipEntries } from '../../../../widgets/cli/formats/zip-reader.ts';
-import { ZipWriter } from '../../../../widgets/cli/formats/zip-writer.ts';
+import { crc32, crc32ByTable } from '../../../../cli/formats/crc32.ts';
+import { npyHeader, npyString, parseNpyHeader } from '../../../../cli/formats/npy.ts';
+import { zipEntries } from '../../../../cli/formats/zip-reader.ts';
+import { ZipWriter } from '../../../../cli/formats/zip-writer.ts';
 
 let dir: string;
 beforeEach(() => {

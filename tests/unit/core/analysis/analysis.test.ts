@@ -1,10 +1,10 @@
 import { describe, expect, it } from 'vitest';
-import { crossings, meanPeriod } from '../../../../widgets/core/analysis/crossings.ts';
-import { floquet, floquetGrid } from '../../../../widgets/core/analysis/floquet.ts';
-import { keplerOrbit } from '../../../../widgets/core/analysis/kepler.ts';
-import { angleBetween, deflectionFrom, rutherfordAngle } from '../../../../widgets/core/analysis/scattering.ts';
-import { canonicalEquations } from '../../../../widgets/core/canonical-equations.ts';
-import { Simulation } from '../../../../widgets/core/simulation.ts';
+import { crossings, meanPeriod } from '../../../../core/analysis/crossings.ts';
+import { floquet, floquetGrid } from '../../../../core/analysis/floquet.ts';
+import { keplerOrbit } from '../../../../core/analysis/kepler.ts';
+import { angleBetween, deflectionFrom, rutherfordAngle } from '../../../../core/analysis/scattering.ts';
+import { canonicalEquations } from '../../../../core/model/canonical-equations.ts';
+import { Simulation } from '../../../../core/simulation.ts';
 
 describe('crossings(t, y, level, direction)', () => {
   it('finds the upward zeros of sin 2πt/3 one period apart', () => {

@@ -4,7 +4,7 @@
  *
  * - the regularised field and its Jacobian against the exact symbolic
  *   derivatives of K = r(H − E) that the expression route takes
- *   (widgets/core/expression/jacobian.ts), and the transformation against
+ *   (core/expression/jacobian.ts), and the transformation against
  *   the symplectic condition (Stiefel & Scheifele 1971, §9);
  * - at isotropy (the paper's factor replaced by 1, a = b) the Kepler problem:
  *   L conserved, the orbit closed (the section's crossings coincide), the
@@ -22,7 +22,7 @@
  *   preservation of the return map in (σ, π).
  */
 import { describe, expect, it } from 'vitest';
-import { keplerOrbit } from '../../../../widgets/core/analysis/kepler.ts';
+import { keplerOrbit } from '../../../../core/analysis/kepler.ts';
 import {
   PAPER_INITIAL,
   PAPER_K,
@@ -35,11 +35,11 @@ import {
   regularisedJacobian,
   relativeMotion,
   toLeviCivita,
-} from '../../../../widgets/core/analysis/anisotropic-kepler.ts';
-import { keplerLyapunov, keplerSection, maxReturn, regularisedOrbit, regularisedStart, sampleInterval, sectionLaunch } from '../../../../widgets/core/analysis/anisotropic-kepler-flow.ts';
-import { compileModel } from '../../../../widgets/core/compile-model.ts';
-import { dormandPrince } from '../../../../widgets/core/integrators/dormand-prince.ts';
-import { rk38 } from '../../../../widgets/core/rk38.ts';
+} from '../../../../core/analysis/anisotropic-kepler.ts';
+import { keplerLyapunov, keplerSection, maxReturn, regularisedOrbit, regularisedStart, sampleInterval, sectionLaunch } from '../../../../core/analysis/anisotropic-kepler-flow.ts';
+import { compileModel } from '../../../../core/model/compile-model.ts';
+import { dormandPrince } from '../../../../core/integrators/dormand-prince.ts';
+import { rk38 } from '../../../../core/integrators/rk38.ts';
 
 const paper = relativeMotion(1.5);
 const paperEnergy = keplerEnergy(paper.system, paper.state);

@@ -20,14 +20,14 @@
  * that depends on t, errors at the rounding floor, a method that cannot run.
  */
 import { describe, expect, it } from 'vitest';
-import { boundedCheck, driftCheck, energyDrift, modifiedEnergyCheck } from '../../../../widgets/core/analysis/energy-drift.ts';
-import { fastestRate } from '../../../../widgets/core/analysis/fastest-rate.ts';
-import { verletCorrection } from '../../../../widgets/core/analysis/modified-hamiltonian.ts';
-import { canonicalEquations } from '../../../../widgets/core/canonical-equations.ts';
-import { methodChoice, type MethodName } from '../../../../widgets/core/integrators/methods.ts';
-import { differenceJacobian } from '../../../../widgets/core/integrators/midpoint.ts';
-import { judge } from '../../../../widgets/book/check-verdict.ts';
-import { ComparisonChecks } from '../../../../widgets/book/method-comparison-result.ts';
+import { boundedCheck, driftCheck, energyDrift, modifiedEnergyCheck } from '../../../../core/analysis/energy-drift.ts';
+import { fastestRate } from '../../../../core/analysis/fastest-rate.ts';
+import { verletCorrection } from '../../../../core/analysis/modified-hamiltonian.ts';
+import { canonicalEquations } from '../../../../core/model/canonical-equations.ts';
+import { methodChoice, type MethodName } from '../../../../core/integrators/methods.ts';
+import { differenceJacobian } from '../../../../core/integrators/midpoint.ts';
+import { judge } from '../../../../widgets/chapter/theory-check/check-verdict.ts';
+import { ComparisonChecks } from '../../../../widgets/chapter/method-comparison/method-comparison-result.ts';
 
 interface Run {
   e: Float64Array;

@@ -1,13 +1,13 @@
 /**
- * peakError (widgets/core/analysis/leakage.ts): the bound on how far the
+ * peakError (core/analysis/leakage.ts): the bound on how far the
  * other lines, and the mirror images at negative frequency, pull a refined
  * spectral peak. Checked on sums of cosines whose frequencies are known
  * exactly: the refined peak must lie within the bound of the true frequency,
  * for every phase, and the bound must not be vacuous.
  */
 import { describe, expect, it } from 'vitest';
-import { peakError } from '../../../../widgets/core/analysis/leakage.ts';
-import { findPeaks, spectrum } from '../../../../widgets/core/index.ts';
+import { peakError } from '../../../../core/analysis/leakage.ts';
+import { findPeaks, spectrum } from '../../../../core/index.ts';
 
 /** Samples of Σ A cos(2πf t + φ) every `dt` over [0, T). */
 function signal(lines: { A: number; f: number; phase: number }[], dt: number, T: number): Float64Array {

@@ -8,14 +8,14 @@
  * Galgani & Strelcyn 1976) reproduces.
  */
 import { describe, expect, it } from 'vitest';
-import { compileModel } from '../../../../widgets/core/compile-model.ts';
-import { harmonicOscillator, henonHeiles } from '../../../../widgets/core/analysis/henon-heiles.ts';
-import { largestLyapunov } from '../../../../widgets/core/analysis/lyapunov.ts';
-import { launchState } from '../../../../widgets/core/analysis/poincare.ts';
-import { rk38 } from '../../../../widgets/core/rk38.ts';
+import { compileModel } from '../../../../core/model/compile-model.ts';
+import { harmonicOscillator, henonHeiles } from '../../../../core/analysis/henon-heiles.ts';
+import { largestLyapunov } from '../../../../core/analysis/lyapunov.ts';
+import { launchState } from '../../../../core/analysis/poincare.ts';
+import { rk38 } from '../../../../core/integrators/rk38.ts';
 
 describe('the Hénon–Heiles Jacobian', () => {
-  it('equals the exact one the expression route derives symbolically (widgets/core/expression/jacobian.ts)', async () => {
+  it('equals the exact one the expression route derives symbolically (core/expression/jacobian.ts)', async () => {
     const compiled = await compileModel({ dof: 2, hamiltonian: '(p0^2 + p1^2)/2 + (q0^2 + q1^2)/2 + q0^2*q1 - q1^3/3', method: 'midpoint' });
     const symbolic = new Function(compiled.code!.jacobian!)()(new Float64Array(0)) as (t: number, x: Float64Array, J: Float64Array) => void;
     for (const s of [[0.3, -0.2, 0.1, 0.4], [-0.5, 0.7, -0.2, 0.05]]) {

@@ -8,12 +8,12 @@
  * claimed is wrong.
  */
 import { describe, expect, it } from 'vitest';
-import { fitLine } from '../../../../widgets/core/analysis/line-fit.ts';
-import { localSlopes, METHOD_ORDERS, orderCheck, type OrderStudyInput } from '../../../../widgets/core/analysis/order-study.ts';
-import { completeEllipticK, pendulumPeriod } from '../../../../widgets/core/analysis/pendulum.ts';
-import { canonicalEquations } from '../../../../widgets/core/canonical-equations.ts';
-import { methodChoice, type MethodName } from '../../../../widgets/core/integrators/methods.ts';
-import { judge } from '../../../../widgets/book/check-verdict.ts';
+import { fitLine } from '../../../../core/analysis/line-fit.ts';
+import { localSlopes, METHOD_ORDERS, orderCheck, type OrderStudyInput } from '../../../../core/analysis/order-study.ts';
+import { completeEllipticK, pendulumPeriod } from '../../../../core/analysis/pendulum.ts';
+import { canonicalEquations } from '../../../../core/model/canonical-equations.ts';
+import { methodChoice, type MethodName } from '../../../../core/integrators/methods.ts';
+import { judge } from '../../../../widgets/chapter/theory-check/check-verdict.ts';
 
 describe('the pendulum in closed form', () => {
   it('K(k) by the AGM matches tabulated values (Abramowitz & Stegun 17.6 and Table 17.1)', () => {

@@ -6,8 +6,8 @@
  * share of points whose verdict is unsettled between T/2 and T.
  */
 import { describe, expect, it } from 'vitest';
-import { henonHeiles } from '../../../../widgets/core/analysis/henon-heiles.ts';
-import { chaoticArea, HENON_HEILES_FIG6, sectionBox } from '../../../../widgets/core/analysis/poincare-area.ts';
+import { henonHeiles } from '../../../../core/analysis/henon-heiles.ts';
+import { chaoticArea, HENON_HEILES_FIG6, sectionBox } from '../../../../core/analysis/poincare-area.ts';
 
 describe('sectionBox', () => {
   it('spans the allowed region of plane x = 0: V(0, y) = y²/2 − y³/3 = E at its ends, p_y up to √(2E)', () => {

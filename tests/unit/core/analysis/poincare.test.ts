@@ -4,8 +4,8 @@
  * invariant curves at E = 1/12, an area-filling sea at E = 1/6.
  */
 import { describe, expect, it } from 'vitest';
-import { harmonicOscillator, henonHeiles } from '../../../../widgets/core/analysis/henon-heiles.ts';
-import { allowed, launchState, section } from '../../../../widgets/core/analysis/poincare.ts';
+import { harmonicOscillator, henonHeiles } from '../../../../core/analysis/henon-heiles.ts';
+import { allowed, launchState, section } from '../../../../core/analysis/poincare.ts';
 
 /** Largest jump of the radius between neighbours in angle around the points' centroid, over the mean radius. */
 function radialJump(u: number[], pu: number[]): number {

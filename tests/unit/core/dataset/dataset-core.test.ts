@@ -5,13 +5,13 @@
  * and derivatives against the harmonic oscillator's.
  */
 import { describe, expect, it } from 'vitest';
-import { canonicalEquations } from '../../../../widgets/core/canonical-equations.ts';
-import { BatchRun, rowColumns } from '../../../../widgets/core/dataset/batch-run.ts';
-import { gridPoint } from '../../../../widgets/core/dataset/grid.ts';
-import { fillInitial, trajectoryCount, type InitialSet } from '../../../../widgets/core/dataset/initial-set.ts';
-import { CounterRandom, philox4x32 } from '../../../../widgets/core/dataset/philox.ts';
-import { everyKSteps, listedTimes } from '../../../../widgets/core/dataset/sample-times.ts';
-import { BlowUpError, InputError } from '../../../../widgets/core/errors.ts';
+import { canonicalEquations } from '../../../../core/model/canonical-equations.ts';
+import { BatchRun, rowColumns } from '../../../../core/dataset/batch-run.ts';
+import { gridPoint } from '../../../../core/dataset/grid.ts';
+import { fillInitial, trajectoryCount, type InitialSet } from '../../../../core/dataset/initial-set.ts';
+import { CounterRandom, philox4x32 } from '../../../../core/dataset/philox.ts';
+import { everyKSteps, listedTimes } from '../../../../core/dataset/sample-times.ts';
+import { BlowUpError, InputError } from '../../../../core/errors.ts';
 
 const hex = (words: Uint32Array) => Array.from(words, (w) => w.toString(16).padStart(8, '0'));
 

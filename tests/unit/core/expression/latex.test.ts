@@ -4,7 +4,7 @@
  * the book's models still read as a physicist would write them.
  */
 import { describe, expect, it } from 'vitest';
-import { compileModel } from '../../../../widgets/core/compile-model.ts';
+import { compileModel } from '../../../../core/model/compile-model.ts';
 
 async function equations(dof: number, hamiltonian: string, params: Record<string, number> = {}): Promise<readonly string[]> {
   return (await compileModel({ dof, hamiltonian, params })).latex!.equations;

@@ -7,11 +7,11 @@
 import type { MathNode } from 'mathjs';
 import { describe, expect, it } from 'vitest';
 import { fpuSource, harmonicSource } from '../../../../bench/chains.ts';
-import { canonicalEquations } from '../../../../widgets/core/canonical-equations.ts';
-import { compileModel } from '../../../../widgets/core/compile-model.ts';
-import { generateCode, hamiltonEquations, parseHamiltonian } from '../../../../widgets/core/expression/compile-expression.ts';
-import { loadMathjs } from '../../../../widgets/core/expression/mathjs.ts';
-import { Partials } from '../../../../widgets/core/expression/partials.ts';
+import { canonicalEquations } from '../../../../core/model/canonical-equations.ts';
+import { compileModel } from '../../../../core/model/compile-model.ts';
+import { generateCode, hamiltonEquations, parseHamiltonian } from '../../../../core/expression/compile-expression.ts';
+import { loadMathjs } from '../../../../core/expression/mathjs.ts';
+import { Partials } from '../../../../core/expression/partials.ts';
 
 /** An irregular, reproducible sequence in (−1, 1): the fractional parts of i·(golden ratio). */
 function irregular(i: number, shift = 0): number {

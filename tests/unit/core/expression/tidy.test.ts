@@ -5,8 +5,8 @@
  */
 import { evaluate, type MathNode } from 'mathjs';
 import { describe, expect, it } from 'vitest';
-import { loadMathjs } from '../../../../widgets/core/expression/mathjs.ts';
-import { Tidy } from '../../../../widgets/core/expression/tidy.ts';
+import { loadMathjs } from '../../../../core/expression/mathjs.ts';
+import { Tidy } from '../../../../core/expression/tidy.ts';
 
 const math = await loadMathjs();
 const STATE = new Set(['q', 'p', 'q0', 'q1', 'q2', 'q3']);

@@ -10,10 +10,10 @@
  * (continuous extension of order 4, HNW §II.6).
  */
 import { describe, expect, it } from 'vitest';
-import { canonicalEquations } from '../../../../widgets/core/canonical-equations.ts';
-import type { AdaptiveStats } from '../../../../widgets/core/integrators/dormand-prince.ts';
-import { methodChoice } from '../../../../widgets/core/integrators/methods.ts';
-import type { Model } from '../../../../widgets/core/types.ts';
+import { canonicalEquations } from '../../../../core/model/canonical-equations.ts';
+import type { AdaptiveStats } from '../../../../core/integrators/dormand-prince.ts';
+import { methodChoice } from '../../../../core/integrators/methods.ts';
+import type { Model } from '../../../../core/types.ts';
 
 const ATOL = 1e-14;
 const statsOf = (model: Model) => (model.stepper as unknown as { stats: AdaptiveStats }).stats;

@@ -7,8 +7,8 @@
  * term's share, which at these dt is below 0.15 for every method here.
  */
 import { describe, expect, it } from 'vitest';
-import { canonicalEquations } from '../../../../widgets/core/canonical-equations.ts';
-import { methodChoice, type MethodName } from '../../../../widgets/core/integrators/methods.ts';
+import { canonicalEquations } from '../../../../core/model/canonical-equations.ts';
+import { methodChoice, type MethodName } from '../../../../core/integrators/methods.ts';
 
 const STEPS = [0.2, 0.1, 0.05, 0.025];
 const T = 10;

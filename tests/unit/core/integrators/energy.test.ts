@@ -14,8 +14,8 @@
  * maxima are at t = T/10 and t = T), which the test takes within 7–13×.
  */
 import { describe, expect, it } from 'vitest';
-import { canonicalEquations, type HamiltonianSpec } from '../../../../widgets/core/canonical-equations.ts';
-import { methodChoice, type MethodName } from '../../../../widgets/core/integrators/methods.ts';
+import { canonicalEquations, type HamiltonianSpec } from '../../../../core/model/canonical-equations.ts';
+import { methodChoice, type MethodName } from '../../../../core/integrators/methods.ts';
 
 const PENDULUM: HamiltonianSpec = { dof: 1, hamiltonian: 'p^2/2 - cos(q)' };
 /** From q = 2 rad at rest: a large swing, far from the harmonic regime. */

@@ -5,10 +5,10 @@
  * Jacobian is a central difference, checked against closed-form motion.
  */
 import { describe, expect, it } from 'vitest';
-import { canonicalEquations } from '../../../../widgets/core/canonical-equations.ts';
-import { compileModel } from '../../../../widgets/core/compile-model.ts';
-import { methodChoice } from '../../../../widgets/core/integrators/methods.ts';
-import type { MidpointStats } from '../../../../widgets/core/integrators/midpoint.ts';
+import { canonicalEquations } from '../../../../core/model/canonical-equations.ts';
+import { compileModel } from '../../../../core/model/compile-model.ts';
+import { methodChoice } from '../../../../core/integrators/methods.ts';
+import type { MidpointStats } from '../../../../core/integrators/midpoint.ts';
 
 function jacobianOf(source: string, params: Float64Array, t: number, x: number[]): number[] {
   const evaluate = new Function(source)()(params) as (t: number, x: Float64Array, out: Float64Array) => void;

@@ -4,11 +4,11 @@
  * form of H itself, worked by hand.
  */
 import { describe, expect, it } from 'vitest';
-import { canonicalEquations } from '../../../../widgets/core/canonical-equations.ts';
-import { hamiltonEquations, parseHamiltonian } from '../../../../widgets/core/expression/compile-expression.ts';
-import { loadMathjs } from '../../../../widgets/core/expression/mathjs.ts';
-import { separability } from '../../../../widgets/core/expression/separable.ts';
-import { methodChoice } from '../../../../widgets/core/integrators/methods.ts';
+import { canonicalEquations } from '../../../../core/model/canonical-equations.ts';
+import { hamiltonEquations, parseHamiltonian } from '../../../../core/expression/compile-expression.ts';
+import { loadMathjs } from '../../../../core/expression/mathjs.ts';
+import { separability } from '../../../../core/expression/separable.ts';
+import { methodChoice } from '../../../../core/integrators/methods.ts';
 
 async function separates(source: string, dof = 1, paramNames: string[] = []) {
   const math = await loadMathjs();

@@ -1,0 +1,26 @@
+/**
+ * Chapters of the book: every `*.mdx` file in the top-level `content/` folder.
+ *
+ * Front matter of a chapter:
+ * - `title` (string, required): the chapter's heading, in the contents and in prev/next links.
+ * - `description` (string, required): one sentence shown under the title on the contents page
+ *   and used as the page's meta description.
+ * - `order` (integer, required): the chapter's position in the book. Chapters are listed and
+ *   linked in increasing `order`; two chapters may not share one (the build fails). Leave gaps
+ *   (1, 2, 3 … 99) so a chapter can be slotted in without renumbering.
+ * - `slug` (string, optional): the URL segment, `/<slug>/`. Defaults to the file name
+ *   without `.mdx` (this is the glob loader's own rule).
+ *
+ * A fenced block marked ```` ```js cell ```` inside a chapter is a live code cell
+ * (site/lib/remark-cells.mjs).
+ */
+import { defineCollection } from 'astro:content';
+import { glob } from 'astro/loaders';
+import { chapterSchema } from './lib/chapter-schema';
+
+const chapters = defineCollection({
+  loader: glob({ pattern: '**/*.mdx', base: './content' }),
+  schema: chapterSchema,
+});
+
+export const collections = { chapters };

@@ -1,0 +1,122 @@
+/**
+ * The driver's animation loop in Node, with the page's clocks and observers
+ * replaced by ones the test works by hand: frames run when the test says,
+ * and the test says when the simulator goes out of view and back.
+ */
+import { afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
+import { canonicalEquations } from '../../../../core/model/canonical-equations.ts';
+import { Simulation } from '../../../../core/simulation.ts';
+import { Driver } from '../../../../widgets/simulator/driver.ts';
+
+/** requestAnimationFrame by hand: `frames(n)` runs n frames 1/60 s apart. */
+function animationFrames() {
+  let pending = new Map<number, FrameRequestCallback>();
+  let id = 0;
+  let now = 1000;
+  vi.stubGlobal('requestAnimationFrame', (callback: FrameRequestCallback) => (pending.set(++id, callback), id));
+  vi.stubGlobal('cancelAnimationFrame', (handle: number) => pending.delete(handle));
+  return {
+    get scheduled() {
+      return pending.size;
+    },
+    frames(n: number) {
+      for (let i = 0; i < n; i++) {
+        now += 1000 / 60;
+        const due = pending;
+        pending = new Map();
+        for (const callback of due.values()) callback(now);
+      }
+    },
+  };
+}
+
+/** IntersectionObserver by hand: `deliver(...states)` hands the driver one batch of entries, oldest first. */
+function viewObserver() {
+  let callback: ((entries: { isIntersecting: boolean }[]) => void) | undefined;
+  vi.stubGlobal(
+    'IntersectionObserver',
+    class {
+      constructor(cb: typeof callback) {
+        callback = cb;
+      }
+      observe() {}
+      disconnect() {}
+    },
+  );
+  return { deliver: (...states: boolean[]) => callback!(states.map((isIntersecting) => ({ isIntersecting }))) };
+}
+
+/** A Worker that only counts how often it is made (the page never hears back, so it goes on integrating). */
+function countedWorkers() {
+  const made = { count: 0 };
+  vi.stubGlobal(
+    'Worker',
+    class {
+      constructor() {
+        made.count++;
+      }
+      postMessage() {}
+      terminate() {}
+    },
+  );
+  return made;
+}
+
+describe('Driver', () => {
+  let model: Awaited<ReturnType<typeof canonicalEquations>>;
+  beforeAll(async () => {
+    model = await canonicalEquations({ dof: 1, hamiltonian: 'p^2/2 + q^2/2' });
+  });
+  beforeEach(() => {
+    vi.stubGlobal('document', { visibilityState: 'visible', addEventListener() {}, removeEventListener() {} });
+  });
+  afterEach(() => vi.unstubAllGlobals());
+
+  it('goes on computing when the view reports, in one delivery, that the simulator left and came back', () => {
+    const raf = animationFrames();
+    const view = viewObserver();
+    const simulation = new Simulation(model, { initial: [1, 0], dt: 1e-3 });
+    const driver = new Driver(simulation, [], { element: { isConnected: true } as HTMLElement, worker: false });
+    driver.play();
+    raf.frames(3);
+    expect(simulation.t).toBeGreaterThan(0);
+
+    // Out of view: nothing is computed, and no frame is asked for.
+    view.deliver(false);
+    raf.frames(3);
+    const paused = simulation.t;
+    expect(raf.scheduled).toBe(0);
+
+    // Back in view, reported together with an older "out": the present is the last entry.
+    view.deliver(false, true);
+    raf.frames(30);
+    // 30 frames of 1/60 s at speed 1 (the first after the pause counts as one frame).
+    expect(simulation.t - paused).toBeCloseTo(30 / 60, 2);
+    driver.dispose();
+  });
+
+  it('keeps a cheap model on the page, and moves one that costs the page more than offloadMs a frame to a worker', async () => {
+    const raf = animationFrames();
+    viewObserver();
+    const workers = countedWorkers();
+
+    // At speed 1, 1000 steps a second: a few microseconds a frame.
+    const cheap = new Driver(new Simulation(model, { initial: [1, 0], dt: 1e-3 }), [], { element: { isConnected: true } as HTMLElement });
+    cheap.play();
+    raf.frames(120);
+    await new Promise((resolve) => setTimeout(resolve, 50));
+    expect(workers.count).toBe(0);
+    expect(cheap.simulation.t).toBeGreaterThan(1.9);
+    cheap.dispose();
+
+    // At speed 10⁴, 10⁷ steps a second: far more than a frame can hold on the page.
+    const costly = new Driver(new Simulation(model, { initial: [1, 0], dt: 1e-3, capacity: 1000 }), [], {
+      element: { isConnected: true } as HTMLElement,
+      speed: 1e4,
+    });
+    costly.play();
+    raf.frames(30);
+    await vi.waitFor(() => expect(workers.count).toBe(1));
+    costly.dispose();
+  });
+});

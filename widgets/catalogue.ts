@@ -1,0 +1,118 @@
+/**
+ * The book's named widgets and helpers, available to every code cell by bare
+ * name (e.g. `simulator(...)` in a cell). Add entries here: each entry is a
+ * loader, and the value it resolves to is handed to cells as is — a function
+ * stays a function the cell calls.
+ *
+ * cells/boot.ts passes this catalogue to the cell machinery, over the
+ * standard builtins, so an entry here wins over a standard builtin of the
+ * same name. A cell that defines the same name wins over both.
+ *
+ * Every entry is a loader because the cell machinery calls it only when a
+ * cell first names it: a page ships only the widgets its cells use, and none
+ * before its cells run. The
+ * page's context (chapter/models/page-data.ts) carries what the build compiled and
+ * typeset, so that the entries which build models or typeset math use it
+ * instead of loading mathjs or KaTeX.
+ */
+import type { BuildOptions } from '../core/index.ts';
+import type { PageContext } from './chapter/models/page-data.ts';
+import { VIEW_MODULES } from './simulator/view-modules.ts';
+
+/**
+ * Starts fetching the modules a cell's widget will need, from what the
+ * build left in its output: the simulator's module and its views' together,
+ * rather than the views only once the simulator's module has run. Over a
+ * slow network that is one round trip less before the widget is drawn.
+ */
+export function prefetchWidgets(cell: Element): void {
+  const reserved = cell.querySelector<HTMLElement>('[data-reserve="simulator"]');
+  if (!reserved) return;
+  const views = (reserved.dataset.reserveViews ?? '').split(' ').filter((v): v is keyof typeof VIEW_MODULES => v in VIEW_MODULES);
+  // Failures are the simulator's to report when it runs; here they would only be noise.
+  for (const load of [() => import('./simulator/simulator.ts'), ...views.map((v) => VIEW_MODULES[v])]) load().catch(() => undefined);
+}
+
+/**
+ * The catalogue: each name's loader, called once, when a cell first names it
+ * (cells/builtins.ts takes it as its `Loaders`). Its return type is left to
+ * inference so that every entry keeps the type of what it loads, which the
+ * VS Code extension reads for completions (vscode/build/catalogue.ts).
+ *
+ * `cellSignal` is the cell machinery's signal for the cell whose code is
+ * running, which aborts when that cell is defined again (cells/runtime.ts):
+ * a model build started by a cell stops when an edit makes it obsolete.
+ */
+export function createLibrary(page: PageContext, cellSignal: () => AbortSignal | undefined = () => undefined) {
+  // The core's modules one by one, not its index: a page then loads only the parts its cells use.
+  const spectrum = () => import('../core/spectrum/spectrum.ts');
+  const invariants = () => import('../core/invariants.ts');
+  const analysis = () => import('./chapter/analysis/analysis.ts');
+  const typesetting = () => import('./chapter/math/tex.ts').then((m) => m.typesetting(page.typeset));
+  // New models compile in a worker (chapter/models/compile-worker.ts), reporting progress; an edit that supersedes the cell cancels its build.
+  const build = (): BuildOptions => ({
+    store: page.models,
+    signal: cellSignal(),
+    progress: (done, total) => document.dispatchEvent(new CustomEvent('phasebook:compiling', { detail: { fraction: done / total } })),
+    compile: (spec, control) => import('./chapter/models/compile-client.ts').then((m) => m.compileInWorker(spec, control)),
+  });
+
+  return {
+    // Widgets
+    /** simulator({hamiltonian, initial, …}) → Promise of the widget's element */
+    simulator: () => import('./simulator/simulator.ts').then((m) => (options: Parameters<typeof m.simulator>[0]) => m.simulator(options, build())),
+    /** Views (each has an `.element`), for composing a simulator by hand */
+    timePlot: () => import('./plots/time/time-plot.ts').then((m) => m.timePlot),
+    trajectoryView: () => import('./plots/plane/trajectory-view.ts').then((m) => m.trajectoryView),
+    phasePortrait: () => import('./plots/plane/phase-portrait.ts').then((m) => m.phasePortrait),
+    spectrumView: () => import('./plots/spectrum/spectrum-view.ts').then((m) => m.spectrumView),
+    /** theoryCheck({label, measured, predicted, errors: {formula, integration, measurement}, validity, missing, relative, unit, method, formula}) → element */
+    theoryCheck: () => import('./chapter/theory-check/theory-check.ts').then((m) => m.theoryCheck),
+    /** equations(model) → H and Hamilton's equations, typeset */
+    equations: () => typesetting().then((t) => t.equations),
+    /** tex(source, {display}) → typeset LaTeX */
+    tex: () => typesetting().then((t) => t.tex),
+    /** chart({label, x, y, series, rules}) → a figure: points, lines, formula curves and bands on linear or log axes, with legend, data table, PNG and CSV; a cell that runs again updates its figure in place */
+    chart: () => import('./chapter/chart/chart.ts').then((m) => (options: Parameters<typeof m.chart>[0]) => m.chart(options, cellSignal())),
+    /** table({columns, rows, caption}) → a table of numbers that scrolls on a phone; rows may be a function, read again every `refresh` seconds */
+    table: () => import('./chapter/table/table.ts').then((m) => m.table),
+    /** stabilityChart({hamiltonian, params, x, y, frequencyParam, boundaries, onSelect}) → Floquet chart computed in a worker */
+    stabilityChart: () => import('./chapter/stability-chart/stability-chart.ts').then((m) => (options: Parameters<typeof m.stabilityChart>[0]) => m.stabilityChart(options, build())),
+    /** poincareSection({energies, energy, plane, orbits, crossings, onLaunch}) → Hénon–Heiles surface of section computed in a worker; click to launch an orbit; {system: 'anisotropic-kepler', factor} for the paper's chaotic Kepler variant */
+    poincareSection: () => import('./chapter/poincare-section/poincare-section.ts').then((m) => m.poincareSection),
+    /** chaoticShare({energy, plane, grid, time}) → Promise of the section's chaotic share and its errors, computed in a worker */
+    chaoticShare: () => import('./chapter/poincare-section/poincare-section.ts').then((m) => m.chaoticShare),
+    /** anisotropicKeplerRun({factor, time}) → Promise of the paper's orbit in the anisotropic Kepler problem, regularised, at two tolerances: period, energy error, exponent */
+    anisotropicKeplerRun: () => import('./chapter/poincare-section/poincare-section.ts').then((m) => m.anisotropicKeplerRun),
+    /** henonHeilesFig6: the chaotic share read off Hénon & Heiles (1964) Fig. 6 at E = 1/12, 1/8, 1/6, with its reading error */
+    henonHeilesFig6: () => import('../core/analysis/poincare-area.ts').then((m) => m.HENON_HEILES_FIG6),
+    /** methodComparison({hamiltonian, params, initial, dt, tEnd, methods, order}) → the same model under several integrators, computed in a worker: energy error, phase portraits, cost, order study; its `results` is a Promise of the checks */
+    methodComparison: () =>
+      import('./chapter/method-comparison/method-comparison.ts').then((m) => (options: Parameters<typeof m.methodComparison>[0]) => m.methodComparison(options, build())),
+    /** pendulumPeriod(q0, p0, omega) → the exact period 4K(k)/ω of H = p²/2 − ω² cos q, from the complete elliptic integral */
+    pendulumPeriod: () => import('../core/analysis/pendulum.ts').then((m) => m.pendulumPeriod),
+
+    // The simulation core
+    /** canonicalEquations({dof, hamiltonian, params}) → Promise of a Model */
+    canonicalEquations: () =>
+      import('../core/model/canonical-equations.ts').then((m) => (spec: Parameters<typeof m.canonicalEquations>[0]) => m.canonicalEquations(spec, build())),
+    /** new Simulation(model, {initial, dt, every, derived}): integrate off-screen, e.g. for a theory check */
+    Simulation: () => import('./chapter/models/cell-simulation.ts').then((m) => m.CellSimulation),
+    spectrum: () => spectrum().then((m) => m.spectrum),
+    findPeaks: () => import('../core/spectrum/peaks.ts').then((m) => m.findPeaks),
+    relativeDrift: () => invariants().then((m) => m.relativeDrift),
+    evaluateAlong: () => invariants().then((m) => m.evaluateAlong),
+
+    // Analysis for the chapters' theory checks
+    crossings: () => analysis().then((m) => m.crossings),
+    meanPeriod: () => analysis().then((m) => m.meanPeriod),
+    floquet: () => analysis().then((m) => m.floquet),
+    /** peakError(spectrum, lines, line) → how far leakage and refinement can move a spectral peak */
+    peakError: () => analysis().then((m) => m.peakError),
+    keplerOrbit: () => analysis().then((m) => m.keplerOrbit),
+    rutherfordAngle: () => analysis().then((m) => m.rutherfordAngle),
+    deflectionFrom: () => analysis().then((m) => m.deflectionFrom),
+    outgoingDirection: () => analysis().then((m) => m.outgoingDirection),
+    angleBetween: () => analysis().then((m) => m.angleBetween),
+  };
+}
