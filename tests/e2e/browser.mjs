@@ -99,8 +99,9 @@ export async function cellsReady(page) {
       window.scrollBy(0, window.innerHeight * 0.8);
       return window.scrollY + window.innerHeight >= document.documentElement.scrollHeight - 2;
     });
-    // One frame for the IntersectionObserver to see what came into view.
-    await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+    // One frame for the IntersectionObserver to see what came into view; a frame that does not come (a page
+    // Chromium counts as hidden draws none) is waited for no longer than a second, the observer's own timer.
+    await page.evaluate(() => new Promise((done) => { requestAnimationFrame(() => requestAnimationFrame(done)); setTimeout(done, 1000); }));
     if (atBottom) break;
   }
   await page.waitForSelector('body[data-cells-complete]', { state: 'attached', timeout: 30_000 });

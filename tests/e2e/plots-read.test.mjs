@@ -168,7 +168,13 @@ test('every plot has a text alternative with its ranges and current values, rewr
   const { page, problems } = await openChapter(site, '/introduction/');
   const sim = '[data-cell="sim"] [data-widget="simulator"]';
   await page.locator(sim).scrollIntoViewIfNeeded();
-  await page.waitForTimeout(1500);
+  // The spectrum names its strongest peak once its window holds enough of the motion: soon on a quiet machine,
+  // later on a busy one, where fewer frames come.
+  await page.waitForFunction(
+    (selector) => /strongest peak/.test(document.querySelector(`${selector} [data-widget="spectrum"] canvas`)?.getAttribute('aria-label') ?? ''),
+    sim,
+    { timeout: 60_000 },
+  );
   const texts = () =>
     page.locator(sim).evaluate((root) => {
       const time = root.querySelector('[data-widget="time-plot"] .pb-stage');
