@@ -7,6 +7,8 @@ import { defineConfig } from 'vitest/config';
 export default defineConfig({
   test: {
     include: ['tests/unit/**/*.test.{ts,mjs}'],
+    // One temporary folder for the run, removed at its end (tests/unit/support/scratch-root.ts).
+    globalSetup: ['tests/unit/support/scratch-root.ts'],
     // One limit for every test and hook, set nowhere else: a guard against a hang, not a measure of speed
     // (that is the bench's). The slowest test takes about 10 s of CPU on a quiet machine (a first model
     // compiled with mathjs, CLI runs in child processes); the limit leaves room for a machine four times
