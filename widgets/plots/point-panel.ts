@@ -31,6 +31,8 @@ export class PointPanel {
   readonly #root: HTMLElement;
   /** The last drawing's mappings, which a click is read through; none before the first. */
   #drawn: { mx: Mapping; my: Mapping } | null = null;
+  /** The width of the last drawing (CSS px), to tell a resize that needs a new one. */
+  #drawnWidth = 0;
 
   /** `root` is the widget's element: its width and theme are the panel's. `kind` names the panel to assistive technology. */
   constructor(root: HTMLElement, kind: string, label: string) {
@@ -51,7 +53,8 @@ export class PointPanel {
    * area, y upward. Returns what to draw with, or null without a 2D context.
    */
   frame(heightFor: (width: number) => number, x: Domain, y: Domain): PanelFrame | null {
-    const width = Math.max(LEAST_WIDTH, this.#root.clientWidth || FALLBACK_WIDTH);
+    const width = this.#width();
+    this.#drawnWidth = width;
     const height = heightFor(width);
     const dpr = pixelRatio();
     const g = scaledContext(this.canvas, width, height, dpr);
@@ -64,6 +67,26 @@ export class PointPanel {
     const my = makeMapping('linear', y, [rect.top + rect.height, rect.top]);
     this.#drawn = { mx, my };
     return { g, dpr, theme, rect, mx, my };
+  }
+
+  /**
+   * Calls `redraw` whenever the root's width changes the panel's (a phone
+   * turned, a window resized, a column narrowed), so that the canvas never
+   * overflows its column nor draws scaled; stops once the root has left
+   * the page.
+   */
+  followWidth(redraw: () => void): void {
+    if (typeof ResizeObserver === 'undefined') return;
+    const observer = new ResizeObserver(() => {
+      if (!this.#root.isConnected) return observer.disconnect();
+      if (this.#drawnWidth > 0 && this.#root.clientWidth > 0 && this.#width() !== this.#drawnWidth) redraw();
+    });
+    observer.observe(this.#root);
+  }
+
+  /** The width to draw at: the root's, once laid out, but never under the least. */
+  #width(): number {
+    return Math.max(LEAST_WIDTH, this.#root.clientWidth || FALLBACK_WIDTH);
   }
 
   /** Ends a drawing: the ring around the chosen point (u, v), if any, then the axes over everything. */

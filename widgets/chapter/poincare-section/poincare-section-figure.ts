@@ -72,6 +72,7 @@ export class SectionFigure {
     if (kepler) Object.assign(this.root.dataset, { factor: String(kepler.factor), mu: String(kepler.mu) });
     const label = this.#view.labels;
     this.#panel = new PointPanel(this.root, 'surface of section', `Surface of section ${this.#view.plane} in ${label.u} and ${label.pu}: arrow keys move the launch point (Shift for larger steps), Enter or Space launches an orbit from it; or click`);
+    this.#panel.followWidth(() => this.draw());
     this.#reading.setAttribute('aria-live', 'polite');
     this.#progress.max = 1;
     this.#stopButton.type = 'button';

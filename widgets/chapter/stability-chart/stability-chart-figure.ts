@@ -50,6 +50,7 @@ export class StabilityFigure {
     this.root.dataset.widget = 'stability-chart';
     // Operable by keyboard as by pointer: arrows move the chosen point over the grid, Enter or Space applies it.
     this.#panel = new PointPanel(this.root, 'stability chart', `Stability chart over ${x.param} and ${y.param}: arrow keys move the point (Shift for larger steps), Enter or Space chooses it; or click`);
+    this.#panel.followWidth(() => this.draw());
     this.#reading = document.createElement('p');
     this.#reading.className = 'pb-stability-reading';
     this.#reading.setAttribute('aria-live', 'polite');
