@@ -10,7 +10,7 @@ import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
 import { after, before, test } from 'node:test';
 import { chartIn, widgetsReady } from './chapter-checks.mjs';
-import { openChapter, openSite } from './fixture.mjs';
+import { cellsReady, openChapter, openSite } from './fixture.mjs';
 
 /** @type {Awaited<ReturnType<typeof openSite>>} */
 let site;
@@ -90,6 +90,41 @@ test('a chart redraws in the colours of the theme the reader picks', async () =>
   const dark = [await inColour(LIGHT_MUTED), await inColour(DARK_MUTED)];
   assert.ok(light[0] > 20 && light[1] === 0, `light theme: ${light}`);
   assert.ok(dark[1] > 20 && dark[0] === 0, `dark theme: ${dark}`);
+  await page.close();
+});
+
+test('a chart a generator updates every frame is drawn while near the view only, and drawn again on its return', async () => {
+  const PHASE = "The oscillator's state in phase space";
+  const page = await site.context.newPage();
+  // Counts each canvas's clearings: the chart clears its canvas once a drawing.
+  await page.addInitScript(() => {
+    const clear = CanvasRenderingContext2D.prototype.clearRect;
+    CanvasRenderingContext2D.prototype.clearRect = function (...args) {
+      this.canvas.pbPaints = (this.canvas.pbPaints ?? 0) + 1;
+      return clear.apply(this, args);
+    };
+  });
+  await page.goto(`${site.origin}/introduction/`);
+  await cellsReady(page);
+  const figure = page.locator(`[data-widget="chart"][data-label="${PHASE}"]`);
+  await figure.scrollIntoViewIfNeeded();
+  await figure.locator('canvas').waitFor();
+  const paints = () => figure.locator('canvas').evaluate((c) => c.pbPaints ?? 0);
+  const statePoint = () => figure.evaluate((el) => JSON.stringify(el.chart.series.find((s) => s.label === 'state now').curves));
+  // Near the view: drawn frame after frame (a few at least, however few frames a busy machine gives).
+  const before = await paints();
+  await page.waitForFunction((n) => (document.querySelector('[data-widget="chart"][data-label="The oscillator\'s state in phase space"] canvas').pbPaints ?? 0) >= n + 5, before, { timeout: 30_000 });
+  // Far from it: the chart keeps changing (its description and .chart follow), but nothing is drawn.
+  await page.evaluate(() => window.scrollTo(0, document.documentElement.scrollHeight));
+  await page.waitForTimeout(500);
+  const away = await paints();
+  const point = await statePoint();
+  await page.waitForFunction((p) => JSON.stringify(document.querySelector('[data-widget="chart"][data-label="The oscillator\'s state in phase space"]').chart.series.find((s) => s.label === 'state now').curves) !== p, point, { timeout: 30_000 });
+  await page.waitForTimeout(1000);
+  assert.equal(await paints(), away, 'drawings while far from the view');
+  // Back: drawn again.
+  await figure.scrollIntoViewIfNeeded();
+  await page.waitForFunction((n) => (document.querySelector('[data-widget="chart"][data-label="The oscillator\'s state in phase space"] canvas').pbPaints ?? 0) > n, away, { timeout: 30_000 });
   await page.close();
 });
 

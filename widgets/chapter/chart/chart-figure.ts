@@ -74,6 +74,15 @@ export class ChartFigure {
   /** Whether the figure's size is observed: from its making, until it is found off the page. */
   #observed = false;
   readonly #resized: ResizeObserver | null;
+  /**
+   * Whether the figure is near the view (or that cannot be known). A chart
+   * a generator updates every frame is drawn only there: scrolled away, each
+   * update is described and kept, and the last one drawn when the figure
+   * comes back, instead of a layout and a canvas drawn sixty times a second
+   * for nobody (a tenth of a phone's main thread on the introduction).
+   */
+  #nearView = true;
+  readonly #seen: IntersectionObserver | null;
   /** a frame asked for to draw a chart shown while the figure was off the page */
   #frame = 0;
 
@@ -99,6 +108,10 @@ export class ChartFigure {
     this.#describe();
     // Draws when the figure is laid out or resized; lets go once it has left the page (an update takes it up again).
     this.#resized = typeof ResizeObserver === 'undefined' ? null : new ResizeObserver(() => this.#onResize());
+    this.#seen =
+      typeof IntersectionObserver === 'undefined'
+        ? null
+        : new IntersectionObserver((entries) => this.#onSeen(entries[entries.length - 1].isIntersecting), { rootMargin: '200px 0px' });
     this.#observe();
   }
 
@@ -113,7 +126,7 @@ export class ChartFigure {
     this.#dirty = true;
     this.#describe();
     this.#observe();
-    if (this.element.isConnected) return this.draw();
+    if (this.element.isConnected) return this.#nearView ? this.draw() : undefined;
     // Not on the page at this moment (a cell moving it into new markup): draw once it is back.
     this.#frame ||= requestAnimationFrame(() => {
       this.#frame = 0;
@@ -140,6 +153,8 @@ export class ChartFigure {
 
   /** The canvas with its legend under it, on the theme's background, as a PNG download. */
   async savePng(): Promise<void> {
+    // The canvas may hold an older chart than the one shown in words, if updates came while it was away.
+    this.draw();
     const t = this.#theme ?? readTheme(this.element);
     const dpr = pixelRatio();
     const width = this.#drawnWidth || 640;
@@ -192,12 +207,20 @@ export class ChartFigure {
   #onResize(): void {
     if (this.element.isConnected) return this.draw();
     this.#resized?.disconnect();
+    this.#seen?.disconnect();
     this.#observed = false;
+  }
+
+  /** The figure came near the view or left it: back near it, the chart shown is drawn if it changed meanwhile. */
+  #onSeen(near: boolean): void {
+    this.#nearView = near;
+    if (near) this.draw();
   }
 
   #observe(): void {
     if (!this.#resized || this.#observed) return;
     this.#observed = true;
     this.#resized.observe(this.element);
+    this.#seen?.observe(this.element);
   }
 }
