@@ -9,6 +9,7 @@ import { remarkCells, CELL_CODE_LANGUAGE } from './site/lib/remark-cells.mjs';
 import { bookChunks } from './site/lib/chunks.mjs';
 import { linkedPreloads } from './site/lib/linked-preloads.mjs';
 import { rehypeHeadingAnchors } from './site/lib/rehype-heading-anchors.mjs';
+import { searchIndex } from './site/lib/search-index.mjs';
 
 const CORE = fileURLToPath(new URL('./core/', import.meta.url));
 
@@ -81,7 +82,8 @@ export default defineConfig({
       defaultColor: false,
     },
   },
-  integrations: [mdx(), linkedPreloads()],
+  // searchIndex after linkedPreloads: the index is built from the pages as they are served.
+  integrations: [mdx(), linkedPreloads(), searchIndex()],
   vite: {
     ...(outDir ? { cacheDir: `${outDir}/.vite-cache` } : {}),
     // Workers (the stability chart's) load mathjs lazily, so they need ES modules to split chunks.
