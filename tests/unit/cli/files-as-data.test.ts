@@ -5,15 +5,14 @@
  * meta, row or file is said in one line naming the file; and both stop on
  * SIGINT and SIGTERM as simulate does, leaving no partial file.
  */
-import { execFile, spawn } from 'node:child_process';
 import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterEach, beforeAll, beforeEach, describe, expect, it } from 'vitest';
-import { ensureCli, ROOT } from '../../../bin/cli-bundle.mjs';
+import { ensureCli } from '../../../bin/cli-bundle.mjs';
 import { parseJSON, toJSON } from '../../../core/index.ts';
+import { startCli, type CliExit } from '../support/cli-harness.ts';
 
-const BIN = join(ROOT, 'bin/phasebook.mjs');
 
 let scratch: string;
 let marker: string;
@@ -27,25 +26,10 @@ beforeEach(() => {
 });
 afterEach(() => rmSync(scratch, { recursive: true, force: true }));
 
-interface Exit {
-  code: number | null;
-  stdout: string;
-  stderr: string;
-}
+type Exit = CliExit;
 
 /** `phasebook …args` as a process; its temporary files go to the scratch folder, where a test can see them. */
-function start(args: string[], env: Record<string, string> = {}) {
-  const child = spawn('node', [BIN, ...args], {
-    env: { ...process.env, PHASEBOOK_CACHE_DIR: join(scratch, 'cache'), TMPDIR: scratch, ...env },
-    stdio: ['ignore', 'pipe', 'pipe'],
-  });
-  let stdout = '';
-  let stderr = '';
-  child.stdout.on('data', (chunk) => (stdout += chunk));
-  child.stderr.on('data', (chunk) => (stderr += chunk));
-  const exited = new Promise<Exit>((resolve) => child.on('close', (code) => resolve({ code, stdout, stderr })));
-  return { child, exited };
-}
+const start = (args: string[], env: Record<string, string> = {}) => startCli(args, { PHASEBOOK_CACHE_DIR: join(scratch, 'cache'), TMPDIR: scratch, ...env });
 const phasebook = (args: string[], env?: Record<string, string>) => start(args, env).exited;
 
 async function simulate(args: string[]): Promise<void> {

@@ -4,15 +4,14 @@
  * silently replaced it; a 100 kB H ended in "Maximum call stack size
  * exceeded". Each now runs, or is refused in one line with status 2.
  */
-import { execFile } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterEach, beforeAll, beforeEach, describe, expect, it } from 'vitest';
-import { ensureCli, ROOT } from '../../../bin/cli-bundle.mjs';
+import { ensureCli } from '../../../bin/cli-bundle.mjs';
 import { parseCSV } from '../../../core/tables/csv-read.ts';
+import { runCli, type CliExit } from '../support/cli-harness.ts';
 
-const BIN = join(ROOT, 'bin/phasebook.mjs');
 const RUN = ['simulate', '--dof', '1', '--t-end', '0.01', '--every', '10'];
 const OSCILLATOR = [...RUN, '--hamiltonian', 'p^2/2 + q^2/2'];
 
@@ -25,19 +24,9 @@ beforeEach(() => {
 });
 afterEach(() => rmSync(scratch, { recursive: true, force: true }));
 
-interface Exit {
-  code: number;
-  stdout: string;
-  stderr: string;
-}
+type Exit = CliExit;
 
-function phasebook(args: string[]): Promise<Exit> {
-  return new Promise((resolve) => {
-    execFile('node', [BIN, ...args], { env: { ...process.env, PHASEBOOK_CACHE_DIR: join(scratch, 'cache') }, maxBuffer: 1 << 26 }, (error, stdout, stderr) => {
-      resolve({ code: error ? Number((error as { code?: unknown }).code ?? 1) : 0, stdout, stderr });
-    });
-  });
-}
+const phasebook = (args: string[]) => runCli(args, { PHASEBOOK_CACHE_DIR: join(scratch, 'cache') });
 
 const refused = (exit: Exit, message: RegExp) => {
   expect(exit.code).toBe(2);

@@ -7,20 +7,20 @@
  * the code ran in the CLI's process, as it used to: a marker file would be
  * written, a secret or exit status would come through.
  */
-import { execFile, spawn } from 'node:child_process';
+import { execFile } from 'node:child_process';
 import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterEach, beforeAll, beforeEach, describe, expect, it } from 'vitest';
-import { ensureCli, ROOT } from '../../../../bin/cli-bundle.mjs';
+import { ensureCli } from '../../../../bin/cli-bundle.mjs';
 import { modelRecipe } from '../../../../cli/model/model.ts';
 import { factsOfRecipe } from '../../../../cli/model/model-facts.ts';
 import { hasStablePermissionFlag, sandboxFlags } from '../../../../cli/sandbox/sandbox-flags.ts';
 import { checkReply, printable } from '../../../../cli/sandbox/sandbox-messages.ts';
 import { userModelFromRecipe } from '../../../../cli/model/user-model.ts';
 import { methodChoice, rowColumns } from '../../../../core/index.ts';
+import { runCli, startCli, type CliExit } from '../../support/cli-harness.ts';
 
-const BIN = join(ROOT, 'bin/phasebook.mjs');
 
 let scratch: string;
 let marker: string;
@@ -34,20 +34,10 @@ beforeEach(() => {
 });
 afterEach(() => rmSync(scratch, { recursive: true, force: true }));
 
-interface Exit {
-  code: number;
-  stdout: string;
-  stderr: string;
-}
+type Exit = CliExit;
 
-/** `phasebook …args` as a process, with `env` added to this one's. */
-function phasebook(args: string[], env: Record<string, string> = {}): Promise<Exit> {
-  return new Promise((resolve) => {
-    execFile('node', [BIN, ...args], { env: { ...process.env, PHASEBOOK_CACHE_DIR: join(scratch, 'cache'), TMPDIR: scratch, ...env } }, (error, stdout, stderr) => {
-      resolve({ code: error ? Number((error as { code?: unknown }).code ?? 1) : 0, stdout, stderr });
-    });
-  });
-}
+/** `phasebook …args` as a process, its cache and temporary files in the scratch folder, with `env` added. */
+const phasebook = (args: string[], env: Record<string, string> = {}) => runCli(args, { PHASEBOOK_CACHE_DIR: join(scratch, 'cache'), TMPDIR: scratch, ...env });
 
 const ONE_DOF = ['--dof', '1', '--initial', '1,0', '--t-end', '0.01'];
 const oneLine = (exit: Exit) => expect(exit.stderr.trim().split('\n')).toHaveLength(1);
@@ -172,21 +162,16 @@ describe('simulate runs the user’s JavaScript in the sandbox', () => {
 
   it('stops a sandboxed run whose H never returns on SIGTERM: status 143, no partial, no sandbox left running', async () => {
     const out = join(scratch, 'out.csv');
-    const child = spawn('node', [BIN, 'simulate', '--hamiltonian', '(t, x) => { for (;;) {} }', ...ONE_DOF, '--output', out], {
-      env: { ...process.env, PHASEBOOK_CACHE_DIR: join(scratch, 'cache') },
-      stdio: ['ignore', 'pipe', 'pipe'],
-    });
-    let stderr = '';
-    child.stderr.on('data', (chunk) => (stderr += chunk));
-    const exited = new Promise<number | null>((resolve) => child.on('close', (code) => resolve(code)));
+    const { child, exited } = startCli(['simulate', '--hamiltonian', '(t, x) => { for (;;) {} }', ...ONE_DOF, '--output', out], { PHASEBOOK_CACHE_DIR: join(scratch, 'cache') });
     // The sandbox is up once it is a child of the CLI (Linux's /proc tells); the H then spins in its first evaluation.
     const sandboxes = () => childrenOf(child.pid!);
     await until(() => sandboxes().length > 0 || !existsSync('/proc'), 'the sandbox is running');
     const started = sandboxes();
     await new Promise((resolve) => setTimeout(resolve, 200));
     child.kill('SIGTERM');
-    expect(await exited).toBe(143);
-    expect(stderr).toMatch(/^phasebook: stopped by SIGTERM; \S+out\.csv was not written\n$/);
+    const exit = await exited;
+    expect(exit.code).toBe(143);
+    expect(exit.stderr).toMatch(/^phasebook: stopped by SIGTERM; \S+out\.csv was not written\n$/);
     expect(leftovers()).toEqual([]);
     for (const pid of started) expect(existsSync(`/proc/${pid}`)).toBe(false);
   });
