@@ -1,4 +1,5 @@
 import { h as el } from '../../controls/dom.ts';
+import { minusSign } from '../../controls/format.ts';
 
 /** What scrolling a time plot back needs from it. */
 export interface Scrollable {
@@ -111,7 +112,7 @@ export class ScrubBar {
 
 /** A time with four significant digits, or whole above 1000. */
 export function short(t: number): string {
-  return Math.abs(t) >= 1000 ? t.toFixed(0) : t.toPrecision(4).replace(/(\.\d*?)0+$/, '$1').replace(/\.$/, '');
+  return minusSign(Math.abs(t) >= 1000 ? t.toFixed(0) : t.toPrecision(4).replace(/(\.\d*?)0+$/, '$1').replace(/\.$/, ''));
 }
 
 /**
