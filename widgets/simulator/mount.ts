@@ -5,6 +5,7 @@ import { Transport } from '../controls/transport.ts';
 import { DataPanel } from '../exports/data-panel.ts';
 import { Driver } from './driver.ts';
 import { Notices } from './notices.ts';
+import { isBehind } from './pace.ts';
 import type { View } from '../plots/view.ts';
 import { offerToCell } from '../controls/widget-input.ts';
 
@@ -114,7 +115,7 @@ function followFrames({ root, driver, transport, readouts, notices, panel }: Par
     const now = performance.now();
     if (now - slow > 500) {
       slow = now;
-      transport.showRate(driver.targetRate, driver.playing ? stats.pace : 1);
+      transport.showRate(driver.targetRate, driver.playing && isBehind(stats.pace) ? stats.pace : null);
       notices.showCap(sim);
       panel.update(sim);
     }
@@ -129,7 +130,7 @@ function followState({ root, driver, transport, readouts, notices, panel }: Part
     panel.update(driver.simulation, true);
     transport.setPlaying(playing, !!error);
     // Paused or stopped is not "behind real time": drop the note the last frames may have left.
-    if (!playing) transport.showRate(driver.targetRate, 1);
+    if (!playing) transport.showRate(driver.targetRate, null);
     notices.showError(error);
     root.classList.toggle('pb-playing', playing);
   });
