@@ -6,6 +6,7 @@ import { DataPanel } from '../exports/data-panel.ts';
 import { Driver } from './driver.ts';
 import { Notices } from './notices.ts';
 import { isBehind } from './pace.ts';
+import { spanningViews } from '../plots/sizes.ts';
 import type { View } from '../plots/view.ts';
 import { offerToCell } from '../controls/widget-input.ts';
 
@@ -82,6 +83,9 @@ function assemble(options: MountOptions, first: Simulation, views: View[], make:
   const notices = new Notices();
   const readouts = new Readouts();
   const viewBox = h('div', 'pb-views', {}, ...views.map((v) => v.element));
+  // Which views take the whole width where they go two abreast: as the box reserved for them has it (reserve.ts).
+  const spans = spanningViews(views.map((v) => v.element.dataset.widget === 'spectrum'));
+  views.forEach((v, i) => v.element.classList.toggle('pb-span', spans[i]));
   const panel = new DataPanel(() =>
     views.flatMap((v) => (v.canvases ? v.canvases().map((c) => ({ name: c.name, canvas: () => v.canvases!().find((d) => d.name === c.name)!.canvas })) : [])),
   );
