@@ -372,6 +372,17 @@ describe('on a phone, 390 px, under a finger', () => {
       assert.equal(await read.locator('.cell-hint-touch').first().isVisible(), true);
       assert.equal(await read.locator('.cell-hint-keys').first().isVisible(), false);
       if (path === '/introduction/') {
+        // Nothing clipped: a legend of a few entries shows them all, the last no longer under log y.
+        const legends = await read.locator('[data-widget="time-plot"] .pb-legend-slot').evaluateAll((slots) =>
+          slots.map((slot) => {
+            const box = slot.getBoundingClientRect();
+            const entries = [...slot.querySelectorAll('.pb-legend-entry')];
+            const cut = entries.filter((e) => { const b = e.getBoundingClientRect(); return b.left < box.left - 0.5 || b.right > box.right + 0.5; });
+            return { entries: entries.length, cut: cut.map((e) => e.textContent) };
+          }),
+        );
+        for (const legend of legends.filter((l) => l.entries <= 4)) assert.deepEqual(legend.cut, [], JSON.stringify(legends));
+        assert.ok(legends.some((l) => l.entries === 3), JSON.stringify(legends));
         assert.ok(reserved.length >= 3, `${reserved.length} reserved boxes`);
         for (const { id, height } of reserved) {
           const real = await read.evaluate(simulatorHeight, id);
