@@ -182,7 +182,8 @@ test('every plot has a text alternative with its ranges and current values, rewr
     page.locator(sim).evaluate((root) => {
       const time = root.querySelector('[data-widget="time-plot"] .pb-stage');
       return {
-        time: document.getElementById(time.getAttribute('aria-describedby'))?.textContent ?? '',
+        // described by the scroll hint, then the text alternative
+        time: document.getElementById(time.getAttribute('aria-describedby').split(' ').pop())?.textContent ?? '',
         phase: root.querySelector('[data-widget="phase-portrait"] canvas').getAttribute('aria-label'),
         spectrum: root.querySelector('[data-widget="spectrum"] canvas').getAttribute('aria-label'),
       };
