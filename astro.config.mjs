@@ -2,11 +2,14 @@
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'astro/config';
 import mdx from '@astrojs/mdx';
+import { rehypeHeadingIds } from '@astrojs/markdown-remark';
 import remarkMath from 'remark-math';
 import rehypeKatex from 'rehype-katex';
 import { remarkCells, CELL_CODE_LANGUAGE } from './site/lib/remark-cells.mjs';
 import { bookChunks } from './site/lib/chunks.mjs';
 import { linkedPreloads } from './site/lib/linked-preloads.mjs';
+import { rehypeHeadingAnchors } from './site/lib/rehype-heading-anchors.mjs';
+import { searchIndex } from './site/lib/search-index.mjs';
 
 const CORE = fileURLToPath(new URL('./core/', import.meta.url));
 
@@ -70,7 +73,8 @@ export default defineConfig({
   },
   markdown: {
     remarkPlugins: [remarkMath, remarkCells],
-    rehypePlugins: [rehypeKatex],
+    // Headings get their ids here, before their links are made; Astro's own pass later keeps them.
+    rehypePlugins: [rehypeKatex, rehypeHeadingIds, rehypeHeadingAnchors],
     syntaxHighlight: { type: 'shiki', excludeLangs: [CELL_CODE_LANGUAGE] },
     shikiConfig: {
       // github-dark's comments read at 3.4:1 on the dark page; the default variant's at 5.9:1.
@@ -78,7 +82,8 @@ export default defineConfig({
       defaultColor: false,
     },
   },
-  integrations: [mdx(), linkedPreloads()],
+  // searchIndex after linkedPreloads: the index is built from the pages as they are served.
+  integrations: [mdx(), linkedPreloads(), searchIndex()],
   vite: {
     ...(outDir ? { cacheDir: `${outDir}/.vite-cache` } : {}),
     // Workers (the stability chart's) load mathjs lazily, so they need ES modules to split chunks.

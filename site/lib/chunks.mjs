@@ -34,6 +34,8 @@ function pathOf(id) {
 const LAZY = [
   [/^node_modules\/(@codemirror|@lezer|style-mod|w3c-keyname|crelt)\/|^cells\/editor\.ts$/, 'editor'],
   [/^node_modules\/(@observablehq\/parser|acorn|acorn-walk)\//, 'parser'],
+  // The search box's code, which its inline script imports when the reader asks (site/lib/search-box.ts).
+  [/^site\/search\//, 'search'],
 ];
 
 /** Every other module of the book, by what loads it; the first rule that matches wins. */

@@ -14,7 +14,19 @@
  * - `data:` and `blob:` images (the favicon, plot downloads);
  * - workers from the book's own scripts only (`worker-src 'self'`): the
  *   compile, stability and simulation workers are bundled modules of the
- *   site, and make no request of their own.
+ *   site, and make no request of their own; the search worker fetches the
+ *   book's own index (site/search/).
+ *
+ * Search adds nothing to the policy, and in particular no
+ * `'wasm-unsafe-eval'`. Pagefind reads its index with WebAssembly, but in
+ * the search worker (site/search/search-worker.ts), not in the page: the
+ * sandbox takes WebAssembly from the page once a reader's code runs, and a
+ * worker is out of its reach. A worker loaded from the site is not under
+ * this policy at all: a policy delivered in a <meta> tag governs only its
+ * document (CSP 3 gives a worker the policy its own response carries, and a
+ * static host sends none). Were the book served with this policy as a
+ * header, the worker would get it too, and `'unsafe-eval'`, which the
+ * cells need anyway, allows compiling WebAssembly as well.
  *
  * A blocked request shows under the cell that made it (cells/boot.ts).
  *

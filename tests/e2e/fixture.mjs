@@ -104,3 +104,17 @@ export async function typeIntoAddedCell(page, source) {
   await page.keyboard.insertText(source);
   await page.keyboard.press('Shift+Enter');
 }
+
+/** Waits until the place `id` (a heading) is at the top of the view, within its top third, with the address naming it: where a link to it lands. */
+export async function landedOn(page, id) {
+  await page.waitForFunction(
+    (target) => {
+      const heading = document.getElementById(target);
+      if (!heading || decodeURIComponent(location.hash.slice(1)) !== target) return false;
+      const top = heading.getBoundingClientRect().top;
+      return top >= -1 && top < innerHeight / 3;
+    },
+    id,
+    { timeout: 15_000 },
+  );
+}

@@ -99,6 +99,27 @@ test('a reader who only reads loads neither the editor nor the parser, however l
   await page.close();
 });
 
+test('search loads nothing with a page, however long the reader stays; focusing the box loads its module, its worker and the index', async (t) => {
+  const page = await site.context.newPage();
+  const { problems, requests } = watchPage(page);
+  await page.goto(`${site.origin}/introduction/`);
+  await cellsReady(page);
+  await page.waitForTimeout(1500);
+  const isSearch = (url) => /\/_astro\/search[.-][\w-]+\.js$|\/pagefind\//.test(new URL(url).pathname);
+  assert.deepEqual(requests.filter(isSearch), []);
+  assert.deepEqual(scripts(requests).filter((url) => containsAny(url, ['searchHeld', 'phasebook-search'])), []);
+
+  await page.locator('#site-search-input').focus();
+  await page.waitForSelector('form[data-search-held]', { state: 'attached', timeout: 20_000 });
+  const searchScripts = scripts(requests).filter(isSearch);
+  assert.equal(searchScripts.filter((url) => /\/search\.[\w-]+\.js$/.test(url)).length, 1, 'the search module');
+  assert.equal(searchScripts.filter((url) => /\/search-worker-[\w-]+\.js$/.test(url)).length, 1, 'its worker');
+  const index = requests.filter((url) => new URL(url).pathname.startsWith('/pagefind/'));
+  t.diagnostic(`search: ${gzipBytes(searchScripts)} B gzip of script, then ${index.length} file(s) of the index, ${gzipBytes(index)} B gzip`);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 test('a chapter without cells loads no cell code', async () => {
   const page = await site.context.newPage();
   const { requests } = watchPage(page);

@@ -1,7 +1,8 @@
 /**
  * A tiny static file server over the built site (dist/), for the e2e tests:
  * 127.0.0.1 on a free port, real MIME types, `/<slug>/` → `<slug>/index.html`,
- * and a redirect from `/<slug>` to `/<slug>/` as static hosts do.
+ * and a redirect from `/<slug>` to `/<slug>/` as static hosts do; at the
+ * root of the host, or under a base path as a GitHub project site is.
  * Nothing is cached, so every test sees exactly the requests a page makes.
  * Text is sent gzip-compressed when the browser accepts it, as GitHub Pages
  * and other static hosts send it, so that load times measured through it
@@ -48,18 +49,26 @@ async function fileAt(path) {
 
 /**
  * @param {string} root directory to serve (default: dist/)
+ * @param {{ base?: string }} [options] `base`: serve the site under this path (`/phasebook/`), as a
+ *   project site is served, and nothing outside it
  * @returns {Promise<{ origin: string, close: () => Promise<void> }>}
  */
-export async function startServer(root = DIST) {
+export async function startServer(root = DIST, { base: mount = '/' } = {}) {
   const base = resolve(root);
   if (!(await fileAt(join(base, 'index.html')))) {
     throw new Error(`No built site in ${base}: run \`npm run build\` first.`);
   }
   const server = createServer(async (request, response) => {
     const url = new URL(request.url ?? '/', 'http://127.0.0.1');
+    // The path inside the site: under a base path, what lies outside it is not the site's.
+    const inside = url.pathname.startsWith(mount) ? `/${url.pathname.slice(mount.length)}` : url.pathname === mount.slice(0, -1) ? '/' : null;
+    if (inside === null) {
+      response.writeHead(404, { 'Content-Type': MIME_TYPES['.txt'], 'Cache-Control': 'no-store' }).end('Not found');
+      return;
+    }
     let path;
     try {
-      path = normalize(join(base, decodeURIComponent(url.pathname)));
+      path = normalize(join(base, decodeURIComponent(inside)));
     } catch {
       response.writeHead(400).end('Bad request');
       return;

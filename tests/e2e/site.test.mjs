@@ -51,21 +51,29 @@ test('KaTeX renders inline and display math on the introduction', async () => {
   await page.close();
 });
 
-test('chapters link to previous, next and contents in declared order', async () => {
+test('chapters link to previous and next in declared order, at their top and their bottom, and to the contents at the bottom', async () => {
   const paths = await chapterPaths();
   for (const [i, path] of paths.entries()) {
     const page = await site.context.newPage();
     await page.goto(site.origin + path);
-    const nav = page.locator('nav.chapter-nav');
-    assert.equal(await nav.locator('a.contents').getAttribute('href'), '/');
-    const hrefOf = async (selector) => {
-      const links = nav.locator(selector);
-      return (await links.count()) > 0 ? links.getAttribute('href') : null;
-    };
-    const previous = await hrefOf('a[rel=prev]');
-    const next = await hrefOf('a[rel=next]');
-    assert.equal(previous, i > 0 ? paths[i - 1] : null, `previous of ${path}`);
-    assert.equal(next, i < paths.length - 1 ? paths[i + 1] : null, `next of ${path}`);
+    for (const place of ['top', 'bottom']) {
+      const nav = page.locator(`nav.chapter-nav-${place}`);
+      assert.equal(await nav.count(), 1, `one ${place} navigation on ${path}`);
+      const hrefOf = async (selector) => {
+        const links = nav.locator(selector);
+        return (await links.count()) > 0 ? links.getAttribute('href') : null;
+      };
+      assert.equal(await hrefOf('a[rel=prev]'), i > 0 ? paths[i - 1] : null, `previous of ${path}, ${place}`);
+      assert.equal(await hrefOf('a[rel=next]'), i < paths.length - 1 ? paths[i + 1] : null, `next of ${path}, ${place}`);
+      assert.equal(await hrefOf('a.contents'), place === 'bottom' ? '/' : null, `contents from ${path}, ${place}`);
+    }
+    // The top's links come before the chapter's title, the bottom's after its text.
+    const order = await page.evaluate(() => {
+      const title = document.querySelector('article h1');
+      const follows = (a, b) => Boolean(a && b && a.compareDocumentPosition(b) & Node.DOCUMENT_POSITION_FOLLOWING);
+      return [follows(document.querySelector('.chapter-nav-top'), title), follows(document.querySelector('article'), document.querySelector('.chapter-nav-bottom'))];
+    });
+    assert.deepEqual(order, [true, true], path);
     await page.close();
   }
 });

@@ -51,6 +51,9 @@ describe('site/lib/chunks.mjs: what loads together', () => {
       [at('core/record.ts')]: { importedIds: [], exports: ['Record'] },
       [at('widgets/controls/dom.ts')]: { importedIds: [] },
       [at('node_modules/@codemirror/view/dist/index.js')]: { importedIds: [] },
+      // The search box's module is an entry of its own (site/lib/search-index.mjs), which the pages import only when asked.
+      [at('site/search/search-ui.ts')]: { isEntry: true, importedIds: [at('site/search/excerpt.ts')] },
+      [at('site/search/excerpt.ts')]: { importedIds: [] },
     };
     const meta = { getModuleIds: () => Object.keys(modules)[Symbol.iterator](), getModuleInfo: (id: string) => modules[id] ?? null };
     const chunkOf = bookChunks();
@@ -61,5 +64,8 @@ describe('site/lib/chunks.mjs: what loads together', () => {
     // re-exported by the front door but not imported through it by the boot code
     expect(chunkOf(at('core/record.ts'), meta)).toBe('core');
     expect(chunkOf(at('node_modules/@codemirror/view/dist/index.js'), meta)).toBe('editor');
+    // an entry, but not one a page loads: search's code stays out of the boot chunk
+    expect(chunkOf(at('site/search/search-ui.ts'), meta)).toBe('search');
+    expect(chunkOf(at('site/search/excerpt.ts'), meta)).toBe('search');
   });
 });

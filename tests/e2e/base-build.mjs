@@ -1,0 +1,37 @@
+/**
+ * The book built a second time, for a base path (`PHASEBOOK_BASE=/phasebook/`),
+ * as a GitHub project site is built: the e2e tests of the book under a sub-path
+ * serve it there. It is built beside the site under test (PHASEBOOK_OUT_DIR +
+ * `-base`, or build/site-base/), or taken from PHASEBOOK_BASE_OUT_DIR, and
+ * built again whenever the site under test is newer.
+ */
+import { spawn } from 'node:child_process';
+import { existsSync, statSync } from 'node:fs';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { DIST } from './server.mjs';
+
+const ROOT = fileURLToPath(new URL('../../', import.meta.url));
+
+export const BASE = '/phasebook/';
+
+export const BASE_DIST =
+  process.env.PHASEBOOK_BASE_OUT_DIR ?? (process.env.PHASEBOOK_OUT_DIR ? `${process.env.PHASEBOOK_OUT_DIR.replace(/\/+$/, '')}-base` : join(ROOT, 'build', 'site-base'));
+
+const builtAt = (dir) => (existsSync(join(dir, 'index.html')) ? statSync(join(dir, 'index.html')).mtimeMs : -Infinity);
+
+/** Builds the base-path site unless one at least as new as the site under test is there. */
+export async function ensureBaseBuild(log = () => {}) {
+  if (builtAt(BASE_DIST) >= builtAt(DIST)) return;
+  log(`building the book for ${BASE} into ${BASE_DIST}`);
+  const child = spawn('npx', ['astro', 'build'], {
+    cwd: ROOT,
+    env: { ...process.env, PHASEBOOK_BASE: BASE, PHASEBOOK_OUT_DIR: BASE_DIST, ASTRO_TELEMETRY_DISABLED: '1' },
+    stdio: ['ignore', 'pipe', 'pipe'],
+  });
+  let output = '';
+  child.stdout.on('data', (chunk) => (output = (output + chunk).slice(-20_000)));
+  child.stderr.on('data', (chunk) => (output = (output + chunk).slice(-20_000)));
+  const code = await new Promise((done) => child.on('close', done));
+  if (code !== 0) throw new Error(`the build for ${BASE} failed (exit ${code}):\n${output}`);
+}

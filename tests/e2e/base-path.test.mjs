@@ -1,0 +1,67 @@
+/**
+ * The book served under a base path, as a GitHub project site is
+ * (`PHASEBOOK_BASE=/phasebook/ npm run build`, then the site at
+ * `/phasebook/`): its pages, their links and search all stay under it, and
+ * nothing is asked of the host's root. The site is built for this by
+ * base-build.mjs when the one at hand is older than the site under test.
+ */
+import assert from 'node:assert/strict';
+import { after, before, test } from 'node:test';
+import { firstViewReady, launchBrowser, watchPage } from './browser.mjs';
+import { BASE, BASE_DIST, ensureBaseBuild } from './base-build.mjs';
+import { landedOn } from './fixture.mjs';
+import { search, shownResults } from './search-helpers.mjs';
+import { startServer } from './server.mjs';
+
+/** @type {{ origin: string, close: () => Promise<void> }} */
+let server;
+/** @type {Awaited<ReturnType<typeof launchBrowser>>} */
+let browser;
+before(async () => {
+  await ensureBaseBuild((line) => process.stderr.write(`base-path.test: ${line}\n`));
+  server = await startServer(BASE_DIST, { base: BASE });
+  browser = await launchBrowser({ viewport: { width: 1280, height: 900 } });
+});
+after(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+test('under a base path, a chapter loads whole from under it, and its navigation stays there', async () => {
+  const page = await browser.context.newPage();
+  const { problems, requests } = watchPage(page);
+  await page.goto(`${server.origin}${BASE}order-and-chaos/`);
+  await firstViewReady(page);
+  assert.deepEqual(problems, []);
+  const outside = requests.filter((url) => url.startsWith(server.origin) && !new URL(url).pathname.startsWith(BASE));
+  assert.deepEqual(outside, []);
+  for (const selector of ['.chapter-nav-top a[rel=prev]', '.chapter-nav-top a[rel=next]', '.chapter-nav-bottom a.contents', '.wordmark']) {
+    assert.match((await page.locator(selector).getAttribute('href')) ?? '', /^\/phasebook\//, selector);
+  }
+  await page.locator('.on-this-page-column a[data-section-link="the-lyapunov-exponent"]').click();
+  await landedOn(page, 'the-lyapunov-exponent');
+  assert.equal(new URL(page.url()).pathname, `${BASE}order-and-chaos/`);
+  await page.close();
+});
+
+test('under a base path, search finds "Lyapunov" in Order and chaos and "adiabatic" in its chapter, and lands on the section', async () => {
+  const page = await browser.context.newPage();
+  const { problems, requests } = watchPage(page);
+  await page.goto(`${server.origin}${BASE}kepler/`);
+  await firstViewReady(page);
+
+  await search(page, 'adiabatic');
+  assert.equal((await shownResults(page))[0]?.href, `${BASE}adiabatic-invariants/`);
+
+  await search(page, 'Lyapunov');
+  const [first] = await shownResults(page);
+  assert.equal(first?.href, `${BASE}order-and-chaos/`);
+  assert.ok(first.sections.some((section) => section.href === `${BASE}order-and-chaos/#the-lyapunov-exponent`), JSON.stringify(first.sections));
+  const index = requests.filter((url) => /\/pagefind\//.test(url));
+  assert.ok(index.length > 0 && index.every((url) => new URL(url).pathname.startsWith(`${BASE}pagefind/`)), index.join('\n'));
+
+  await page.locator(`.search-section[href="${BASE}order-and-chaos/#the-lyapunov-exponent"]`).click();
+  await landedOn(page, 'the-lyapunov-exponent');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
