@@ -110,7 +110,11 @@ export function renderCell(source, id, analysis, output) {
       h('div', { className: ['cell-toolbar'] }, [
         h('span', { className: ['cell-status'], dataCellStatus: '' }),
         h('span', { className: ['cell-activity'], dataCellActivity: '', ariaLive: 'polite' }),
-        h('span', { className: ['cell-hint'] }, [text('Shift+Enter runs')]),
+        // The way to run that the device has: a key on a desk, the Run button under a finger (site/styles/cells.css).
+        h('span', { className: ['cell-hint'] }, [
+          h('span', { className: ['cell-hint-keys'] }, [text('Shift+Enter runs')]),
+          h('span', { className: ['cell-hint-touch'] }, [text('Edit, then tap Run')]),
+        ]),
         h('button', { type: 'button', className: ['cell-button'], dataCellAdd: '', title: 'Add a cell of your own below this one' }, [text('+ Cell')]),
         h('button', { type: 'button', className: ['cell-button'], dataCellReset: '', disabled: true }, [text('Reset')]),
         h('button', { type: 'button', className: ['cell-button', 'cell-run'], dataCellRun: '' }, [text('Run')]),

@@ -55,8 +55,11 @@ test('the chaotic share agrees with Hénon & Heiles Fig. 6 at each energy, withi
 async function pointIn(selector, radius, u, p) {
   const box = await page.locator(`${selector} canvas`).boundingBox();
   const r = radius * 1.08;
-  // The plot is inset by the axes' margins: 50 px left, 12 right, 24 top, 38 bottom.
-  return { x: 50 + ((u + r) / (2 * r)) * (box.width - 62), y: 24 + ((r - p) / (2 * r)) * (box.height - 62) };
+  // The plot is inset by the axes' margins: 50 px left, 12 right, 24 top, 38 bottom; the disk is drawn round,
+  // at one scale on both axes, centred in the plot.
+  const [width, height] = [box.width - 62, box.height - 62];
+  const scale = Math.min(width, height) / (2 * r);
+  return { x: 50 + width / 2 + u * scale, y: 24 + height / 2 - p * scale };
 }
 
 /** Pixel position in the Hénon–Heiles section of the point (u, p) at energy E. */

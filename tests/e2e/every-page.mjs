@@ -76,7 +76,7 @@ const CHECKS_DISAGREE = new Set(['/order-and-chaos/']);
 const heavyIn = (requests) => HEAVY.filter(([, pattern]) => requests.some((url) => pattern.test(url))).map(([name]) => name);
 
 /** In the page: each simulator box the build reserved that no cell has replaced yet, with its output's height. */
-function reservedBoxes() {
+export function reservedBoxes() {
   return [...document.querySelectorAll('[data-reserve="simulator"]')].map((box) => ({
     id: box.closest('[data-cell]').id,
     height: box.closest('[data-cell-output]').getBoundingClientRect().height,
@@ -84,7 +84,7 @@ function reservedBoxes() {
 }
 
 /** In the page: the height the simulator in cell `id` takes, less the messages it shows later; null if it has none. */
-function simulatorHeight(id) {
+export function simulatorHeight(id) {
   const output = document.getElementById(id).querySelector('[data-cell-output]');
   const simulator = output.querySelector('[data-widget="simulator"]');
   if (!simulator) return null;
@@ -151,7 +151,7 @@ function outsideWidth(root) {
  * waits for its file (`block`) instead. The rules are the book's own, declared by its head script; only how
  * long a face is waited for changes.
  */
-function inTheBooksFonts() {
+export function inTheBooksFonts() {
   new MutationObserver((records) => {
     for (const record of records) {
       for (const node of record.addedNodes) {

@@ -172,9 +172,12 @@ test('every plot has a text alternative with its ranges and current values, rewr
   const sim = '[data-cell="sim"] [data-widget="simulator"]';
   await page.locator(sim).scrollIntoViewIfNeeded();
   // The spectrum names its strongest peak once its window holds enough of the motion: soon on a quiet machine,
-  // later on a busy one, where fewer frames come.
+  // later on a busy one, where fewer frames come. On a desk the whole simulator is in view, so that can come
+  // within a few tenths of a time unit, before p has swung both ways: the texts are read after a whole unit.
   await page.waitForFunction(
-    (selector) => /strongest peak/.test(document.querySelector(`${selector} [data-widget="spectrum"] canvas`)?.getAttribute('aria-label') ?? ''),
+    (selector) =>
+      /strongest peak/.test(document.querySelector(`${selector} [data-widget="spectrum"] canvas`)?.getAttribute('aria-label') ?? '') &&
+      document.querySelector(selector).simulator.simulation.t > 1,
     sim,
     { timeout: 60_000 },
   );
@@ -182,7 +185,8 @@ test('every plot has a text alternative with its ranges and current values, rewr
     page.locator(sim).evaluate((root) => {
       const time = root.querySelector('[data-widget="time-plot"] .pb-stage');
       return {
-        time: document.getElementById(time.getAttribute('aria-describedby'))?.textContent ?? '',
+        // described by the scroll hint, then the text alternative
+        time: document.getElementById(time.getAttribute('aria-describedby').split(' ').pop())?.textContent ?? '',
         phase: root.querySelector('[data-widget="phase-portrait"] canvas').getAttribute('aria-label'),
         spectrum: root.querySelector('[data-widget="spectrum"] canvas').getAttribute('aria-label'),
       };

@@ -9,6 +9,31 @@ const SUPERSCRIPT: Record<string, string> = {
 };
 
 /**
+ * A number's text as JavaScript or d3 wrote it (toFixed, toPrecision,
+ * toExponential), as the page prints it: a true minus sign, and none on a
+ * number that reads as zero. Rounding to fixed decimals keeps the sign of a
+ * small negative it rounds away ((−0.00004).toFixed(2) is "-0.00"), and
+ * every "−0.00" a readout showed came from there.
+ */
+export function minusSign(text: string): string {
+  if (!text.startsWith('-')) return text;
+  const magnitude = text.slice(1);
+  return /^[0.]*(e[+-]?\d+)?$/i.test(magnitude) ? magnitude : `−${magnitude}`;
+}
+
+/** `x` to `decimals` places, with a true minus sign and never "−0": what rounds to zero reads 0.00. */
+export function fixedNumber(x: number, decimals: number): string {
+  if (!Number.isFinite(x)) return readoutNumber(x);
+  return minusSign(x.toFixed(decimals));
+}
+
+/** The same with its sign always written, for a difference: "+0.01", "−0.01", and "0.00" (no sign) for what rounds to zero. */
+export function signedFixed(x: number, decimals: number): string {
+  const text = fixedNumber(x, decimals);
+  return /^[\d.]+$/.test(text) && /[1-9]/.test(text) ? `+${text}` : text;
+}
+
+/**
  * A number for reading on the page (the readouts, the plots' tables and text
  * alternatives, notes): x with `digits` significant digits, plain when
  * 1e-3 ≤ |x| < 1e6, else m × 10ⁿ.
@@ -18,15 +43,15 @@ export function readoutNumber(x: number, digits = 6): string {
   if (!Number.isFinite(x)) return x > 0 ? '∞' : '−∞';
   if (x === 0) return '0';
   const magnitude = Math.abs(x);
-  if (magnitude >= 1e-3 && magnitude < 1e6) return x.toPrecision(digits).replace('-', '−');
+  if (magnitude >= 1e-3 && magnitude < 1e6) return minusSign(x.toPrecision(digits));
   const [mantissa, exponent] = x.toExponential(digits - 1).split('e');
-  return `${mantissa.replace('-', '−')} × 10${superscript(String(Number(exponent)))}`;
+  return `${minusSign(mantissa)} × 10${superscript(String(Number(exponent)))}`;
 }
 
 /** A time: fixed decimals from the step, so t advances without its width flickering. */
 export function formatTime(t: number, dt: number): string {
   const decimals = Math.max(0, Math.min(8, Math.ceil(-Math.log10(dt) - 1e-9)));
-  return t.toFixed(decimals).replace('-', '−');
+  return fixedNumber(t, decimals);
 }
 
 /** A relative drift, always in scientific form with 2 digits: 3.1 × 10⁻¹². */

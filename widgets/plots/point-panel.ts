@@ -7,8 +7,9 @@
  * click, or the arrow keys and Enter, give the point in the plane's own
  * coordinates.
  */
-import { drawAxes, MARGIN, type Rect } from './axes.ts';
+import { type AxisReadout, drawAxes, MARGIN, type Rect } from './axes.ts';
 import { pixelRatio, scaledContext } from './canvas.ts';
+import { fitEqualAspect } from './extent.ts';
 import { type Domain, makeMapping, type Mapping } from './scale.ts';
 import { readTheme, type Theme } from './theme.ts';
 
@@ -22,6 +23,17 @@ export interface PanelFrame {
   readonly my: Mapping;
 }
 
+export interface PointPanelOptions {
+  /**
+   * The plane's axes share a unit (a surface of section's coordinate and
+   * momentum in the same scaled units): one unit is then as long across as
+   * up, and the ranges asked for are widened on one axis to fill the panel,
+   * so that a disk is drawn as a disk. Axes of different quantities (a
+   * stability chart's frequency and depth) fill the panel each on its own.
+   */
+  sameUnits?: boolean;
+}
+
 /** Width before the panel is laid out, and the least it is drawn at (CSS px). */
 const FALLBACK_WIDTH = 640;
 const LEAST_WIDTH = 280;
@@ -33,10 +45,15 @@ export class PointPanel {
   #drawn: { mx: Mapping; my: Mapping } | null = null;
   /** The width of the last drawing (CSS px), to tell a resize that needs a new one. */
   #drawnWidth = 0;
+  readonly #sameUnits: boolean;
+  /** The axes as last drawn, read through the root's `axes` as the book's other plots are (tests/e2e/plot-axes.mjs). */
+  #axes: { x: AxisReadout; y: AxisReadout } | null = null;
 
   /** `root` is the widget's element: its width and theme are the panel's. `kind` names the panel to assistive technology. */
-  constructor(root: HTMLElement, kind: string, label: string) {
+  constructor(root: HTMLElement, kind: string, label: string, options: PointPanelOptions = {}) {
     this.#root = root;
+    this.#sameUnits = options.sameUnits ?? false;
+    Object.defineProperty(root, 'axes', { get: () => (this.#axes ? [this.#axes] : []), configurable: true });
     const canvas = document.createElement('canvas');
     canvas.style.cursor = 'crosshair';
     canvas.tabIndex = 0;
@@ -50,7 +67,8 @@ export class PointPanel {
    * Sizes the canvas to the root's width and `heightFor` it, paints the
    * theme's background (a canvas is transparent, and the points must read on
    * the page's paper in either theme), and maps x and y onto the plotting
-   * area, y upward. Returns what to draw with, or null without a 2D context.
+   * area, y upward (at one scale for both, widening one range, when the axes
+   * share units). Returns what to draw with, or null without a 2D context.
    */
   frame(heightFor: (width: number) => number, x: Domain, y: Domain): PanelFrame | null {
     const width = this.#width();
@@ -63,6 +81,7 @@ export class PointPanel {
     g.fillStyle = theme.bg;
     g.fillRect(0, 0, width, height);
     const rect = { left: MARGIN.left, top: MARGIN.top, width: width - MARGIN.left - MARGIN.right, height: height - MARGIN.top - MARGIN.bottom };
+    if (this.#sameUnits) [x, y] = equalScale(x, y, rect);
     const mx = makeMapping('linear', x, [rect.left, rect.left + rect.width]);
     const my = makeMapping('linear', y, [rect.top + rect.height, rect.top]);
     this.#drawn = { mx, my };
@@ -99,7 +118,7 @@ export class PointPanel {
       g.arc(f.mx.scale(chosen[0]), f.my.scale(chosen[1]), 6, 0, 2 * Math.PI);
       g.stroke();
     }
-    drawAxes(g, f.rect, f.mx, f.my, f.theme, labels, f.dpr);
+    this.#axes = drawAxes(g, f.rect, f.mx, f.my, f.theme, labels, f.dpr);
   }
 
   /** Calls `pick(u, v)` with the plane's point under each click, once the panel has been drawn. */
@@ -132,4 +151,12 @@ export class PointPanel {
       move(...moves[event.key]);
     });
   }
+}
+
+/** The ranges x and y widened, about their centres, to one scale in `rect`; ranges that are not finite and increasing are left as given. */
+function equalScale(x: Domain, y: Domain, rect: Rect): [Domain, Domain] {
+  const span = (d: Domain) => d[1] - d[0];
+  if (!(span(x) > 0 && span(y) > 0 && Number.isFinite(span(x) + span(y)) && rect.width > 0 && rect.height > 0)) return [x, y];
+  const e = fitEqualAspect({ x0: x[0], x1: x[1], y0: y[0], y1: y[1] }, rect.width, rect.height);
+  return [[e.x0, e.x1], [e.y0, e.y1]];
 }

@@ -47,3 +47,24 @@ export function gridColumns(count: number, width: number): number {
 export function timePlotHeight(area = TIME_PLOT_AREA): number {
   return area + TIME_MARGIN.top + TIME_MARGIN.bottom;
 }
+
+/**
+ * Which of a simulator's views take the whole width where views go two
+ * abreast (widgets.css, class pb-span): the spectrum, whose list of peaks
+ * reads on one line only there, and any other view that has no neighbour
+ * to pair with, in order; so the time plot and a phase portrait go side by
+ * side over the spectrum. `spectrum[i]` says whether view i is one.
+ */
+export function spanningViews(spectrum: readonly boolean[]): boolean[] {
+  const spans = spectrum.map((s) => s);
+  let waiting: number | null = null;
+  spectrum.forEach((isSpectrum, i) => {
+    if (isSpectrum) {
+      if (waiting !== null) spans[waiting] = true;
+      waiting = null;
+    } else if (waiting === null) waiting = i;
+    else waiting = null;
+  });
+  if (waiting !== null) spans[waiting] = true;
+  return spans;
+}

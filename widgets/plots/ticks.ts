@@ -1,5 +1,6 @@
 import { ticks as linearTicks, tickStep } from 'd3-array';
 import { tickFormat } from 'd3-scale';
+import { minusSign } from '../controls/format.ts';
 import type { Mapping, SignedKind } from './scale.ts';
 
 /**
@@ -122,7 +123,7 @@ function plainLabels(values: readonly number[], step: number): string[] {
   if (largest >= 1e5 || (largest > 0 && largest < 1e-3)) return values.map((v) => scientific(v, step));
   const n = values.length;
   const format = n > 1 ? tickFormat(values[0], values[n - 1], n - 1) : tickFormat(values[0] - step, values[0] + step, 2);
-  return values.map((v) => minus(format(v)));
+  return values.map((v) => minusSign(format(v)));
 }
 
 /** v as m×10ⁿ with its own exponent and the decimals the step needs: 2×10⁴, 1.5×10⁵, −2.5×10⁻¹². */
@@ -132,7 +133,7 @@ export function scientific(v: number, step: number): string {
   const digits = (e: number) => Math.max(0, Math.min(15, e - Math.floor(Math.log10(step) + 1e-9)));
   let mantissa = (v / 10 ** exponent).toFixed(digits(exponent));
   if (/^-?10(\.|$)/.test(mantissa)) mantissa = (v / 10 ** ++exponent).toFixed(digits(exponent));
-  return `${minus(mantissa)}×10${superscript(exponent)}`;
+  return `${minusSign(mantissa)}×10${superscript(exponent)}`;
 }
 
 /**
@@ -156,10 +157,10 @@ function offsetText(offset: number, unit: number): string {
   if (offset === 0) return '0';
   const exponent = Math.floor(Math.log10(Math.abs(offset)));
   const digits = Math.max(0, Math.min(15, exponent - Math.round(Math.log10(unit))));
-  if (exponent < 5 && exponent >= -3) return minus(offset.toFixed(Math.max(0, -Math.round(Math.log10(unit)))));
+  if (exponent < 5 && exponent >= -3) return minusSign(offset.toFixed(Math.max(0, -Math.round(Math.log10(unit)))));
   const fixed = (offset / 10 ** exponent).toFixed(digits);
   const mantissa = fixed.includes('.') ? fixed.replace(/\.?0+$/, '') : fixed;
-  return `${minus(mantissa)}×10${superscript(exponent)}`;
+  return `${minusSign(mantissa)}×10${superscript(exponent)}`;
 }
 
 const SUPERSCRIPT = '⁰¹²³⁴⁵⁶⁷⁸⁹';
@@ -175,10 +176,6 @@ export function formatPower(value: number): string {
   const exponent = Math.round(Math.log10(Math.abs(value)));
   if (exponent < 4) return sign + String(Math.abs(value));
   return `${sign}10${superscript(exponent)}`;
-}
-
-function minus(text: string): string {
-  return text.replace('-', '−');
 }
 
 /**
@@ -269,10 +266,10 @@ export function symlogTicks(lo: number, hi: number, count: number, c = 1): numbe
 export function formatTick(v: number): string {
   if (v === 0) return '0';
   const a = Math.abs(v);
-  if (a >= 1e-3 && a < 1e5) return String(Number(v.toPrecision(6))).replace('-', '−');
+  if (a >= 1e-3 && a < 1e5) return minusSign(String(Number(v.toPrecision(6))));
   const exponent = Math.floor(Math.log10(a));
   const mantissa = Number((v / 10 ** exponent).toPrecision(3));
-  return `${mantissa === 1 ? '' : mantissa === -1 ? '−' : `${minus(String(mantissa))}×`}10${superscript(exponent)}`;
+  return `${mantissa === 1 ? '' : mantissa === -1 ? '−' : `${minusSign(String(mantissa))}×`}10${superscript(exponent)}`;
 }
 
 /** Tick values and their labels for a mapping, about `count` of them. */
@@ -284,5 +281,5 @@ export function ticksFor(m: Mapping, count: number): { values: number[]; labels:
   }
   const values = m.scale.ticks(count);
   const format = m.scale.tickFormat(count);
-  return { values, labels: values.map((v) => format(v).replace('-', '−')) };
+  return { values, labels: values.map((v) => minusSign(format(v))) };
 }

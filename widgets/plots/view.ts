@@ -16,7 +16,7 @@ export interface View {
   reset(simulation: Simulation): void;
   /** canvases a PNG download may offer, with a name for each */
   canvases?(): { name: string; canvas: HTMLCanvasElement }[];
-  /** the driver started or stopped integrating (a plot may, say, let the wheel scroll it back while paused) */
+  /** the driver started or stopped integrating */
   setPlaying?(playing: boolean): void;
   dispose(): void;
 }

@@ -1,6 +1,7 @@
 import { MAX_SPEED, outside, type Simulation } from '../../core/index.ts';
 import { carryOver, DEFAULT_BUDGET, integrateFrame, owedSteps, type Budget } from './frame-budget.ts';
 import type { View } from '../plots/view.ts';
+import { PaceMeter } from './pace.ts';
 import type { WorkerIntegrator } from './worker-integrator.ts';
 
 /** Measurements of the last frames, for readouts and tests. */
@@ -13,8 +14,11 @@ export interface FrameStats {
   steps: number;
   /** smoothed steps per real second actually achieved while playing */
   stepsPerSecond: number;
-  /** smoothed achieved / requested rate; below 1 when the model cannot keep up with real time */
-  pace: number;
+  /**
+   * achieved / requested steps over the last frames, once a run has warmed up (pace.ts); below 1 when the model
+   * cannot keep up with real time; null until judged
+   */
+  pace: number | null;
   frames: number;
 }
 
@@ -68,7 +72,7 @@ const COSTLY_FRAMES = 10;
 export class Driver {
   playing = false;
   speed: number;
-  readonly stats: FrameStats = { integrateMs: 0, drawMs: 0, steps: 0, stepsPerSecond: 0, pace: 1, frames: 0 };
+  readonly stats: FrameStats = { integrateMs: 0, drawMs: 0, steps: 0, stepsPerSecond: 0, pace: null, frames: 0 };
   /**
    * Integration time on the page that a 60 Hz frame asks for at this speed, ms, above which the worker takes
    * over: a sixth of the frame budget. Below zero it takes over at once, whatever the model costs.
@@ -92,6 +96,7 @@ export class Driver {
   private offloading = false;
   /** Frames in a row whose share of real time would cost the page more than offloadMs. */
   private costlyFrames = 0;
+  private readonly paceMeter = new PaceMeter();
 
   constructor(
     public simulation: Simulation,
@@ -178,6 +183,7 @@ export class Driver {
   setSpeed(speed: number): void {
     this.speed = checkSpeed(speed);
     this.carry = 0;
+    this.paceMeter.reset();
   }
 
   /** Requested steps per real second at the current speed. */
@@ -282,6 +288,8 @@ export class Driver {
   private frame(now: number): void {
     this.raf = 0;
     if (this.disposed) return;
+    // A run starts afresh (play, a restart, back in view or on the page): its pace is judged anew.
+    if (Number.isNaN(this.last)) this.paceMeter.reset();
     const elapsed = Number.isNaN(this.last) ? 1000 / 60 : now - this.last;
     this.last = now;
     let steps = 0;
@@ -312,10 +320,12 @@ export class Driver {
         this.costlyFrames = demandMs > this.offloadMs ? this.costlyFrames + 1 : 0;
         if (this.costlyFrames >= COSTLY_FRAMES) this.startWorker();
       }
-      const rate = (steps * 1000) / Math.max(1, Math.min(elapsed, this.budget.maxElapsedMs));
+      const counted = Math.max(1, Math.min(elapsed, this.budget.maxElapsedMs));
+      const rate = (steps * 1000) / counted;
       const s = this.stats;
       s.stepsPerSecond = s.frames === 0 ? rate : 0.9 * s.stepsPerSecond + 0.1 * rate;
-      s.pace = Math.min(1, s.stepsPerSecond / this.targetRate);
+      this.paceMeter.frame(now, (this.targetRate * counted) / 1000, steps);
+      s.pace = this.paceMeter.pace;
     }
     this.drawNow(steps, integrateMs);
     if (this.simulation.error) this.pause();

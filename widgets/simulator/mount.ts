@@ -5,6 +5,8 @@ import { Transport } from '../controls/transport.ts';
 import { DataPanel } from '../exports/data-panel.ts';
 import { Driver } from './driver.ts';
 import { Notices } from './notices.ts';
+import { isBehind } from './pace.ts';
+import { spanningViews } from '../plots/sizes.ts';
 import type { View } from '../plots/view.ts';
 import { offerToCell } from '../controls/widget-input.ts';
 
@@ -81,6 +83,9 @@ function assemble(options: MountOptions, first: Simulation, views: View[], make:
   const notices = new Notices();
   const readouts = new Readouts();
   const viewBox = h('div', 'pb-views', {}, ...views.map((v) => v.element));
+  // Which views take the whole width where they go two abreast: as the box reserved for them has it (reserve.ts).
+  const spans = spanningViews(views.map((v) => v.element.dataset.widget === 'spectrum'));
+  views.forEach((v, i) => v.element.classList.toggle('pb-span', spans[i]));
   const panel = new DataPanel(() =>
     views.flatMap((v) => (v.canvases ? v.canvases().map((c) => ({ name: c.name, canvas: () => v.canvases!().find((d) => d.name === c.name)!.canvas })) : [])),
   );
@@ -114,7 +119,7 @@ function followFrames({ root, driver, transport, readouts, notices, panel }: Par
     const now = performance.now();
     if (now - slow > 500) {
       slow = now;
-      transport.showRate(driver.targetRate, driver.playing ? stats.pace : 1);
+      transport.showRate(driver.targetRate, driver.playing && isBehind(stats.pace) ? stats.pace : null);
       notices.showCap(sim);
       panel.update(sim);
     }
@@ -129,7 +134,7 @@ function followState({ root, driver, transport, readouts, notices, panel }: Part
     panel.update(driver.simulation, true);
     transport.setPlaying(playing, !!error);
     // Paused or stopped is not "behind real time": drop the note the last frames may have left.
-    if (!playing) transport.showRate(driver.targetRate, 1);
+    if (!playing) transport.showRate(driver.targetRate, null);
     notices.showError(error);
     root.classList.toggle('pb-playing', playing);
   });

@@ -7,13 +7,14 @@
  * The box is built from the widget's own classes — `.pb-simulator`,
  * `.pb-bar`, `.pb-views`, `.pb-plot-bar`, `.pb-data` — so it gets the
  * widget's padding, gaps and the rows' heights from the one stylesheet
- * (widgets/widgets.css); each plot's height is the view's own rule
- * (plots/sizes.ts) written in CSS on the width of `.pb-views`, a size
+ * (widgets/widgets.css), and the views' columns (one, or two abreast on a
+ * wide simulator); each plot's height is the view's own rule
+ * (plots/sizes.ts) written in CSS on the width of its `.pb-plot`, a size
  * container. No DOM here: the build runs it in Node.
  */
 import type { Model } from '../../core/index.ts';
 import { phasePairs } from '../plots/record-columns.ts';
-import { heightCss, PHASE_MULTIPLE, PHASE_PANEL, SPECTRUM_PLOT, timePlotHeight, TRAJECTORY_PANEL, type Proportional } from '../plots/sizes.ts';
+import { heightCss, PHASE_MULTIPLE, PHASE_PANEL, spanningViews, SPECTRUM_PLOT, timePlotHeight, TRAJECTORY_PANEL, type Proportional } from '../plots/sizes.ts';
 import { readoutLines } from '../plots/spectrum/spectrum-readout.ts';
 import { viewNames, type ViewName } from './options.ts';
 
@@ -60,7 +61,7 @@ function reservedView(name: ViewName, options: ReserveOptions, model: Pick<Model
   }
 }
 
-/** The canvas width of a view: the views' width inside the stage's 1 px border. */
+/** The canvas width of a view: the view's width inside the stage's 1 px border. */
 const CANVAS_WIDTH = '100cqw - 2px';
 
 /**
@@ -78,16 +79,18 @@ function stageStyle(panel: Proportional, panels: number, height: HeightOption): 
   return `--pb-narrow: ${narrow}; --pb-wide: ${wide}`;
 }
 
-function viewHtml(view: ReservedView): string {
+/** A view's box; `span` when it takes the whole width where views go two abreast. */
+function viewHtml(view: ReservedView, span: boolean): string {
+  const plot = span ? 'pb-plot pb-span' : 'pb-plot';
   switch (view.kind) {
     case 'time':
-      return `<div class="pb-plot pb-time-plot"><div class="pb-plot-bar"></div>`
+      return `<div class="${plot} pb-time-plot"><div class="pb-plot-bar"></div>`
         + `<div class="pb-stage" style="height: ${timePlotHeight(view.area)}px"></div><div class="pb-scrub-row"></div></div>`;
     case 'trajectory':
     case 'phase':
-      return `<div class="pb-plot"><div class="pb-reserve-stage" style="${stageStyle(view.panel, view.panels, view.height)}"></div></div>`;
+      return `<div class="${plot}"><div class="pb-reserve-stage" style="${stageStyle(view.panel, view.panels, view.height)}"></div></div>`;
     case 'spectrum':
-      return `<div class="pb-plot pb-plot-spectrum">${view.controls ? '<div class="pb-plot-bar"></div>' : ''}`
+      return `<div class="${plot} pb-plot-spectrum">${view.controls ? '<div class="pb-plot-bar"></div>' : ''}`
         + `<div class="pb-reserve-stage" style="${stageStyle(SPECTRUM_PLOT, 1, view.height)}"></div>`
         + `<div class="pb-spectrum-readout" style="--pb-readout-lines: ${readoutLines(view.peaks)}"></div></div>`;
   }
@@ -100,9 +103,10 @@ function viewHtml(view: ReservedView): string {
  */
 export function reserveHtml(plan: SimulatorPlan): string {
   const views = plan.views.map((v) => v.kind).join(' ');
+  const spans = spanningViews(plan.views.map((v) => v.kind === 'spectrum'));
   return `<div class="pb-simulator pb-reserve" aria-hidden="true" data-reserve="simulator" data-reserve-views="${views}">`
     + `<div class="pb-bar"><span class="pb-reserve-label">Simulator: starting…</span></div>`
-    + `<div class="pb-views">${plan.views.map(viewHtml).join('')}</div>`
+    + `<div class="pb-views">${plan.views.map((v, i) => viewHtml(v, spans[i])).join('')}</div>`
     + `<div class="pb-data"></div></div>`;
 }
 

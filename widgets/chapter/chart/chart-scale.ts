@@ -5,6 +5,7 @@
  * their ticks and labels (plots/scale.ts, linear or log).
  * Pure, so it is unit-tested in Node.
  */
+import { minusSign } from '../../controls/format.ts';
 import { MARGIN, type Rect } from '../../plots/axes.ts';
 import { makeMapping, scaleFor, scaleLinear, scaleLog, type Mapping, type NumberScale } from '../../plots/scale.ts';
 import { formatTick } from '../../plots/ticks.ts';
@@ -134,7 +135,7 @@ export function layoutChart(chart: SettledChart, width: number): { rect: Rect; h
 
 /** Round labels for given tick values: shortest form to six digits, with a true minus sign. */
 function fixedFormat(v: number): string {
-  return String(Number(v.toPrecision(6))).replace(/-/g, '−');
+  return minusSign(String(Number(v.toPrecision(6))));
 }
 
 /**

@@ -71,7 +71,9 @@ export class SectionFigure {
     this.root.dataset.system = system.kind;
     if (kepler) Object.assign(this.root.dataset, { factor: String(kepler.factor), mu: String(kepler.mu) });
     const label = this.#view.labels;
-    this.#panel = new PointPanel(this.root, 'surface of section', `Surface of section ${this.#view.plane} in ${label.u} and ${label.pu}: arrow keys move the launch point (Shift for larger steps), Enter or Space launches an orbit from it; or click`);
+    const described = `Surface of section ${this.#view.plane} in ${label.u} and ${label.pu}: arrow keys move the launch point (Shift for larger steps), Enter or Space launches an orbit from it; or click`;
+    // A section's coordinate and momentum are in one unit (the Kepler problem's scaled to the unit disk): drawn at one scale.
+    this.#panel = new PointPanel(this.root, 'surface of section', described, { sameUnits: true });
     this.#panel.followWidth(() => this.draw());
     this.#reading.setAttribute('aria-live', 'polite');
     this.#progress.max = 1;

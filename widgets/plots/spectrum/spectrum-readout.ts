@@ -1,4 +1,5 @@
 import type { Peak } from '../../../core/index.ts';
+import { minusSign, signedFixed } from '../../controls/format.ts';
 
 /** Lines of the readout under a spectrum listing up to `peaks` peaks (shared with simulator/reserve.ts). */
 export function readoutLines(peaks: number): number {
@@ -72,8 +73,7 @@ function set(element: Element, text: string): void {
 /** `v` to `decimals` places, with a true minus sign and no '-0'. */
 export function fixed(v: number, decimals: number): string {
   if (!Number.isFinite(v)) return String(v);
-  const s = v.toFixed(decimals);
-  return /^-0\.?0*$/.test(s) ? s.slice(1) : s.replace('-', '−');
+  return minusSign(v.toFixed(decimals));
 }
 
 /** `v` to `digits` significant digits, plain for ordinary sizes and as a×10ⁿ otherwise. */
@@ -81,9 +81,9 @@ export function significant(v: number, digits = 4): string {
   if (!Number.isFinite(v)) return String(v);
   if (v === 0) return '0';
   const a = Math.abs(v);
-  if (a >= 1e-4 && a < 1e6) return Number(v.toPrecision(digits)).toString().replace('-', '−');
+  if (a >= 1e-4 && a < 1e6) return minusSign(Number(v.toPrecision(digits)).toString());
   const [mantissa, exponent] = v.toExponential(digits - 1).split('e');
-  return `${mantissa.replace('-', '−')}×10^${Number(exponent)}`;
+  return `${minusSign(mantissa)}×10^${Number(exponent)}`;
 }
 
 /**
@@ -137,7 +137,8 @@ export function basisLine(window: 'hamming' | 'none', t0: number, duration: numb
  */
 export function compareWithTheory(peak: Peak, theory: { frequency: number; label: string }, duration: number, name = 'strongest peak'): string {
   const relative = (peak.frequency - theory.frequency) / theory.frequency;
-  const percent = `${relative >= 0 ? '+' : '−'}${Math.abs(100 * relative).toFixed(2)}%`;
+  // signed as rounded: a peak 0.001% below theory reads 0.00%, not −0.00%
+  const percent = `${signedFixed(100 * relative, 2)}%`;
   return `${name} ${fixed(peak.frequency, frequencyDecimals(duration))} vs ${theory.label}: ${percent}`;
 }
 

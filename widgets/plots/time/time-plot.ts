@@ -8,7 +8,7 @@ import { timePlotHeight } from '../sizes.ts';
 import { rangeText, recordTable, rowsOver, show, type TableData } from '../table-data.ts';
 import { readTheme, type Theme, watchTheme } from '../theme.ts';
 import type { TimeRenderer, UpdateResult } from './time-renderer.ts';
-import { clampEnd, listenScroll, ScrubBar } from './time-scroll.ts';
+import { addScrollHint, clampEnd, listenScroll, ScrubBar } from './time-scroll.ts';
 import { TimeStage, WINDOWS } from './time-stage.ts';
 import type { View } from '../view.ts';
 
@@ -58,7 +58,6 @@ export class TimePlot implements View {
   private themeLive = false;
   /** right edge (column) of a scrolled-back window; null while following the live trace */
   private historyEnd: number | null = null;
-  private playing = true;
   private lastScrub = 0;
   private readonly table: PlotTable;
   private readonly summary: HTMLElement;
@@ -93,7 +92,7 @@ export class TimePlot implements View {
     this.scrub.element.append(this.table.button);
     // The text alternative: what is plotted, its ranges and the latest values, rewritten a few times a second (not live: it would chatter).
     this.summary = el('p', 'pb-visually-hidden', { id: `pb-time-summary-${++summaries}` });
-    this.stage.element.setAttribute('aria-describedby', this.summary.id);
+    this.stage.element.setAttribute('aria-describedby', `${addScrollHint(this.stage.element)} ${this.summary.id}`);
     this.element = el('figure', 'pb-plot pb-time-plot', { 'data-widget': 'time-plot', 'aria-label': label }, bar, this.stage.element, this.summary, this.scrub.element, this.table.element);
     Object.defineProperty(this.element, 'axes', { get: () => [this.stage.axes(this.historyEnd ?? this.renderer.end, this.currentTheme())], configurable: true });
 
@@ -104,7 +103,6 @@ export class TimePlot implements View {
       end: () => this.historyEnd ?? this.renderer.end,
       width: () => this.renderer.width,
       ratio: () => this.stage.ratio,
-      paused: () => !this.playing,
       scrollTo: (end) => this.scrollTo(end),
       goLive: () => this.goLive(),
     });
@@ -138,10 +136,6 @@ export class TimePlot implements View {
     this.renderer.reset(simulation.t0);
     this.applySeries();
     this.present(this.renderer.update(simulation.record), true);
-  }
-
-  setPlaying(playing: boolean): void {
-    this.playing = playing;
   }
 
   canvases(): { name: string; canvas: HTMLCanvasElement }[] {

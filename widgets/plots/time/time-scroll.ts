@@ -1,4 +1,5 @@
 import { h as el } from '../../controls/dom.ts';
+import { minusSign } from '../../controls/format.ts';
 
 /** What scrolling a time plot back needs from it. */
 export interface Scrollable {
@@ -7,22 +8,40 @@ export interface Scrollable {
   /** the plot width in device pixels, and device pixels per CSS pixel */
   width(): number;
   ratio(): number;
-  paused(): boolean;
   /** shows the window ending at column `end` (clamped; the live end follows the trace again) */
   scrollTo(end: number): void;
   goLive(): void;
 }
 
+/** How to move a time plot through its record: the stage's tooltip, its accessible description, and a note shown while it has the keyboard's focus. */
+export const SCROLL_HINT = 'Move through time: drag, scroll sideways, or Shift + wheel; keys ← →, Page Up/Down, Home, End (back to live)';
+
+let hints = 0;
+
 /**
- * Drag, wheel and keys on the plot stage: drag or a horizontal (or shift)
- * wheel at any time, any wheel while paused; ← → by a tenth of a window,
+ * The hint on a plot stage: its title (a mouse's hover) and a note inside it
+ * (shown on keyboard focus, widgets.css), which the stage's description
+ * names; returns the note's id for aria-describedby.
+ */
+export function addScrollHint(stage: HTMLElement): string {
+  const note = el('span', 'pb-stage-hint', { id: `pb-stage-hint-${++hints}`, 'aria-hidden': 'true' }, SCROLL_HINT);
+  stage.title = SCROLL_HINT;
+  stage.append(note);
+  return note.id;
+}
+
+/**
+ * Drag, wheel and keys on the plot stage: a drag, a horizontal wheel, or a
+ * vertical one with Shift, Ctrl or Alt held; ← → by a tenth of a window,
  * Page Up/Down by a window, Home to the start of the record, End to live.
+ * A plain vertical wheel is the page's, paused or not: a reader scrolling
+ * down the chapter must not be caught by every plot they pass.
  */
 export function listenScroll(stage: HTMLElement, plot: Scrollable): void {
   stage.addEventListener(
     'wheel',
     (e) => {
-      const columns = wheelColumns(e, plot.paused(), plot.width(), plot.ratio());
+      const columns = wheelColumns(e, plot.width(), plot.ratio());
       if (columns === 0) return;
       e.preventDefault();
       plot.scrollTo(plot.end() + columns);
@@ -93,7 +112,7 @@ export class ScrubBar {
 
 /** A time with four significant digits, or whole above 1000. */
 export function short(t: number): string {
-  return Math.abs(t) >= 1000 ? t.toFixed(0) : t.toPrecision(4).replace(/(\.\d*?)0+$/, '$1').replace(/\.$/, '');
+  return minusSign(Math.abs(t) >= 1000 ? t.toFixed(0) : t.toPrecision(4).replace(/(\.\d*?)0+$/, '$1').replace(/\.$/, ''));
 }
 
 /**
@@ -118,20 +137,23 @@ export interface WheelLike {
   /** 0 pixels, 1 lines, 2 pages */
   deltaMode: number;
   shiftKey: boolean;
+  ctrlKey: boolean;
+  altKey: boolean;
 }
 
 const LINE_PIXELS = 16;
 
 /**
  * Columns (device pixels) a wheel event scrolls the window by: positive is
- * later in time. A horizontal or shift-wheel always scrolls; a plain vertical
- * wheel scrolls only while the simulation is paused, and otherwise returns 0
- * so the page scrolls as usual.
+ * later in time. A horizontal wheel (a trackpad's sideways swipe) scrolls,
+ * and so does a vertical one with Shift, Ctrl or Alt held (Chromium may turn
+ * Shift's into a horizontal one itself); a plain vertical wheel returns 0, so
+ * the page scrolls as usual.
  */
-export function wheelColumns(event: WheelLike, paused: boolean, pageColumns: number, ratio: number): number {
+export function wheelColumns(event: WheelLike, pageColumns: number, ratio: number): number {
   const horizontal = Math.abs(event.deltaX) > Math.abs(event.deltaY);
   let delta = horizontal ? event.deltaX : event.deltaY;
-  if (!horizontal && !event.shiftKey && !paused) return 0;
+  if (!horizontal && !(event.shiftKey || event.ctrlKey || event.altKey)) return 0;
   if (event.deltaMode === 1) delta *= LINE_PIXELS;
   else if (event.deltaMode === 2) delta *= pageColumns / ratio;
   return delta * ratio;

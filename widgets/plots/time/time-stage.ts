@@ -55,7 +55,7 @@ export class TimeStage {
     this.band = el('canvas', 'pb-xaxis', hidden);
     this.history.hidden = this.band.hidden = true;
     for (const layer of [this.tiles, this.history]) Object.assign(layer.style, { left: `${TIME_MARGIN.left}px`, top: `${TIME_MARGIN.top}px` });
-    const aria = { tabindex: '0', role: 'group', 'aria-roledescription': 'plot', 'aria-label': `${label}: drag, or use the arrow keys, to scroll back in time` };
+    const aria = { tabindex: '0', role: 'group', 'aria-roledescription': 'plot', 'aria-label': label };
     this.element = el('div', 'pb-stage', aria, this.frame, this.tiles, this.history, this.stripBox, this.band);
     this.element.style.height = `${cssHeight}px`;
   }

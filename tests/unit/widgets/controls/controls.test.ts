@@ -3,7 +3,7 @@ import { canonicalEquations } from '../../../../core/model/canonical-equations.t
 import { Simulation } from '../../../../core/simulation.ts';
 import { DriftTracker, energyColumns } from '../../../../widgets/controls/drift.ts';
 import { recordLayout, relativeChange } from '../../../../core/index.ts';
-import { formatDrift, formatRate, formatSpeed, formatTime, readoutNumber } from '../../../../widgets/controls/format.ts';
+import { fixedNumber, formatDrift, formatRate, formatSpeed, formatTime, minusSign, readoutNumber, signedFixed } from '../../../../widgets/controls/format.ts';
 import { parseBound, parseDt, parseNumber } from '../../../../widgets/controls/field-values.ts';
 import { SPEEDS, speedsWith } from '../../../../widgets/controls/transport.ts';
 
@@ -44,6 +44,31 @@ describe('controls/format', () => {
     expect(formatTime(12.3456789, 5e-4)).toBe('12.3457');
     expect(formatTime(3, 0.01)).toBe('3.00');
     expect(formatTime(3, 1)).toBe('3');
+    expect(formatTime(-1.25, 0.01)).toBe('−1.25');
+    expect(formatTime(-1e-9, 5e-4)).toBe('0.0000'); // t0 a hair below zero
+  });
+
+  it('minusSign(text) writes a true minus, and none on a number that reads as zero', () => {
+    expect(minusSign('-2.5')).toBe('−2.5');
+    expect(minusSign('2.5e-7')).toBe('2.5e-7'); // an exponent's sign is not the number's
+    expect(minusSign('-1.5e-7')).toBe('−1.5e-7');
+    expect(['-0', '-0.00', '-0.', '-.000', '-0e+0', '-0.0E-3'].map(minusSign)).toEqual(['0', '0.00', '0.', '.000', '0e+0', '0.0E-3']);
+    expect(minusSign('-0.01')).toBe('−0.01');
+    expect(minusSign('-10')).toBe('−10');
+    expect(minusSign('0.00')).toBe('0.00');
+  });
+
+  it('fixedNumber(x, d) and signedFixed(x, d) never print −0, however small the negative rounded away', () => {
+    for (const x of [-0, -1e-300, -4e-5, -0.004999]) {
+      expect(fixedNumber(x, 2)).toBe('0.00');
+      expect(signedFixed(x, 2)).toBe('0.00');
+      expect(readoutNumber(x, 3)).not.toMatch(/^−0(\.0*)?$/);
+    }
+    expect(fixedNumber(-0.005001, 2)).toBe('−0.01');
+    expect(signedFixed(-0.005001, 2)).toBe('−0.01');
+    expect(signedFixed(27.3812, 2)).toBe('+27.38');
+    expect(signedFixed(4e-5, 2)).toBe('0.00'); // no "+0.00" either: zero has no sign
+    expect([NaN, Infinity, -Infinity].map((x) => fixedNumber(x, 2))).toEqual(['NaN', '∞', '−∞']);
   });
 
   it('formatDrift(d), formatSpeed(s), formatRate(r) read compactly', () => {

@@ -119,4 +119,21 @@ describe('Driver', () => {
     await vi.waitFor(() => expect(workers.count).toBe(1));
     costly.dispose();
   });
+
+  it('gives no verdict on its pace while it starts, and judges a model that keeps up as keeping up', () => {
+    const raf = animationFrames();
+    viewObserver();
+    const driver = new Driver(new Simulation(model, { initial: [1, 0], dt: 1e-3 }), [], { element: { isConnected: true } as HTMLElement, worker: false });
+    expect(driver.stats.pace).toBeNull();
+    driver.play();
+    raf.frames(60); // the first second: warming up, whatever it achieved
+    expect(driver.stats.pace).toBeNull();
+    raf.frames(180);
+    expect(driver.stats.pace).toBeGreaterThan(0.99);
+    // A new speed is a new run: judged anew, after its own warm-up.
+    driver.setSpeed(2);
+    raf.frames(60);
+    expect(driver.stats.pace).toBeNull();
+    driver.dispose();
+  });
 });

@@ -52,9 +52,9 @@ describe('the box reserved for a simulator', () => {
     expect(Math.abs(cssPixels(vars['--pb-narrow'], 400) - (4 * heightAt(PHASE_MULTIPLE, 398) + 2))).toBeLessThanOrEqual(2);
     // Two columns above it: two rows of panels half as wide.
     expect(Math.abs(cssPixels(vars['--pb-wide'], 800) - (2 * heightAt(PHASE_MULTIPLE, 798 / 2) + 2))).toBeLessThanOrEqual(1);
-    // The stylesheet switches at the widget's threshold, counted on the views' width (canvas + border).
+    // The stylesheet switches at the widget's threshold, counted on the view's width (canvas + border).
     const css = readFileSync(new URL('../../../../widgets/widgets.css', import.meta.url), 'utf8');
-    expect(css).toContain(`@container (min-width: ${TWO_COLUMNS_FROM + 2}px)`);
+    expect(css).toContain(`@container pb-view (min-width: ${TWO_COLUMNS_FROM + 2}px)`);
   });
 
   it('fixed heights are reserved as given, and the time plot’s from its plotting area', () => {

@@ -1,11 +1,21 @@
 import { describe, expect, it } from 'vitest';
-import { basisLine, describePeak, fixed, frequencyDecimals, peakLine, significant } from '../../../../../widgets/plots/spectrum/spectrum-readout.ts';
+import { basisLine, compareWithTheory, describePeak, fixed, frequencyDecimals, peakLine, significant } from '../../../../../widgets/plots/spectrum/spectrum-readout.ts';
 
 describe('peak-readout', () => {
   it('fixed(v, d) rounds to d places with a true minus sign and no −0', () => {
     expect(fixed(1.51818, 3)).toBe('1.518');
     expect(fixed(-2.5, 1)).toBe('−2.5');
     expect(fixed(-0.0001, 2)).toBe('0.00');
+  });
+
+  it('compareWithTheory(peak, theory, T) signs the difference as rounded: never “−0.00%”', () => {
+    const theory = { frequency: 1.5, label: 'theory' };
+    const at = (frequency: number) => compareWithTheory({ frequency, amplitude: 1 }, theory, 40);
+    expect(at(1.5 * (1 - 1e-5))).toBe('strongest peak 1.500 vs theory: 0.00%');
+    expect(at(1.5)).toBe('strongest peak 1.500 vs theory: 0.00%');
+    expect(at(1.5 * (1 + 1e-5))).toBe('strongest peak 1.500 vs theory: 0.00%');
+    expect(at(1.5 * 1.0123)).toBe('strongest peak 1.518 vs theory: +1.23%');
+    expect(at(1.5 * 0.9877)).toBe('strongest peak 1.482 vs theory: −1.23%');
   });
 
   it('significant(v, d) keeps d significant digits, switching to ×10^n for extreme sizes', () => {
