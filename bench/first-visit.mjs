@@ -132,9 +132,11 @@ export async function firstVisits(urls, { loads = 3, timeoutMs = 60_000, log = (
   // Chromium's files into the OS cache, and the book's way through the browser once, on a throw-away profile.
   const warm = await chromium.launch(LAUNCH);
   try {
+    // Closed once loaded: a simulator left playing would take the CPU from every load that follows.
     const page = await warm.newPage();
     await page.goto(urls[0]);
     await page.waitForLoadState('load');
+    await page.context().close();
   } catch (error) {
     await warm.close();
     throw error;
