@@ -22,11 +22,12 @@
  * stderr and exit status 2; the PDF is written beside its name and renamed
  * onto it only when complete, so no partial file is left behind.
  */
-import { mkdir, rename, rm } from 'node:fs/promises';
+import { mkdir, rename, rm, writeFile } from 'node:fs/promises';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { DIST, startServer } from '../tests/e2e/server.mjs';
+import { readLinks } from '../tests/e2e/pdf-links.mjs';
 
 const ROOT = fileURLToPath(new URL('..', import.meta.url));
 /** How long one chapter may take to run every cell and draw, ms: generous, for a loaded machine. */
@@ -153,6 +154,7 @@ const BOOK_CSS = `
 .book-contents ol { list-style: none; padding: 0; }
 .book-contents li { display: flex; gap: 0.5em; margin: 0.35em 0; font-size: 12pt; }
 .book-contents li a { flex: 1; text-decoration: none; color: inherit; }
+.book-contents .book-page { min-width: 3em; text-align: right; font-variant-numeric: tabular-nums; }
 .book-chapter { break-before: page; }
 img.book-figure { max-width: 100%; height: auto !important; object-fit: contain; }
 `;
@@ -161,10 +163,13 @@ img.book-figure { max-width: 100%; height: auto !important; object-fit: contain;
 const escapeHtml = (text) => text.replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
 
 /**
- * @param {{ styles: string, site: string, chapters: { slug: string, title: string, html: string }[] }} book
+ * @param {{ styles: string, site: string, chapters: { slug: string, title: string, html: string }[], startPages?: Map<string, number> }} book
+ *   `startPages`: each chapter's first page, by its destination's name, once a first printing has told
  */
-function bookDocument({ styles, site, chapters }) {
-  const contents = chapters.map((c) => `<li><a href="#chapter-${c.slug}">${escapeHtml(c.title)}</a></li>`).join('\n');
+function bookDocument({ styles, site, chapters, startPages = new Map() }) {
+  const contents = chapters
+    .map((c) => `<li><a href="#chapter-${c.slug}">${escapeHtml(c.title)}</a><span class="book-page">${startPages.get(`chapter-${c.slug}`) ?? ''}</span></li>`)
+    .join('\n');
   const body = chapters.map((c) => `<section class="book-chapter" id="chapter-${c.slug}">${c.html}</section>`).join('\n');
   return `<!doctype html>
 <html lang="en" data-theme="light">
@@ -181,6 +186,18 @@ ${body}
 
 const HEADER = `<div style="width:100%;font:8px sans-serif;color:#555;text-align:center;">Phasebook — Hamiltonian mechanics</div>`;
 const FOOTER = `<div style="width:100%;font:8px sans-serif;color:#555;text-align:center;"><span class="pageNumber"></span> / <span class="totalPages"></span></div>`;
+
+/** A4, the running title and page numbers in the margins, and an outline of chapters and sections. */
+const PDF_OPTIONS = {
+  format: 'A4',
+  printBackground: true,
+  displayHeaderFooter: true,
+  headerTemplate: HEADER,
+  footerTemplate: FOOTER,
+  margin: { top: '18mm', bottom: '20mm', left: '16mm', right: '16mm' },
+  outline: true,
+  tagged: true,
+};
 
 /**
  * Opens a chapter, runs its handout's preparation (its Print handout button; the dialog it would open is
@@ -238,22 +255,18 @@ async function main() {
     }
     // The book is served beside the site, so that the fonts' addresses resolve as on its pages.
     const bookUrl = `${server.origin}${base}phasebook-book.html`;
-    const html = bookDocument({ styles, site, chapters });
+    let html = bookDocument({ styles, site, chapters });
     await context.route(bookUrl, (route) => route.fulfill({ contentType: 'text/html; charset=utf-8', body: html }));
-    await home.goto(bookUrl);
-    await home.evaluate(() => document.fonts.ready.then(() => undefined));
+    const print = async () => {
+      await home.goto(bookUrl);
+      await home.evaluate(() => document.fonts.ready.then(() => undefined));
+      return home.pdf(PDF_OPTIONS);
+    };
+    // Printed twice: the first printing says where each chapter starts, which the contents then give. The
+    // numbers take a column the contents keep for them either way, so the pages do not move.
+    html = bookDocument({ styles, site, chapters, startPages: readLinks(await print()).destinations });
     await mkdir(dirname(options.output), { recursive: true });
-    await home.pdf({
-      path: partial,
-      format: 'A4',
-      printBackground: true,
-      displayHeaderFooter: true,
-      headerTemplate: HEADER,
-      footerTemplate: FOOTER,
-      margin: { top: '18mm', bottom: '20mm', left: '16mm', right: '16mm' },
-      outline: true,
-      tagged: true,
-    });
+    await writeFile(partial, await print());
     await rename(partial, options.output);
     process.stderr.write(`pdf: ${options.output}, ${chapters.length} chapters\n`);
   } finally {
