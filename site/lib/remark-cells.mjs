@@ -9,7 +9,7 @@
  *
  * Emitted markup (the contract the client and the e2e tests rely on):
  *
- *   <figure class="cell" id="cell-<id>" data-cell="<id>" data-cell-name="<name>"
+ *   <figure class="cell" id="cell-<id>" data-cell="<id>" data-cell-name="<name>" [data-print-code]
  *           data-cell-hash="<sha256 of the source, 12 hex>" data-cell-spec="<CellSpec JSON>">
  *     <div class="cell-box">
  *       <div class="cell-editor"><pre class="cell-code"><code>…highlighted source…</code></pre></div>
@@ -38,6 +38,12 @@ const PAGE_DATA_PROPERTY = PAGE_DATA_ATTRIBUTE.replace(/-(\w)/g, (_, c) => c.toU
 
 /** The `language-*` class of cell code, which Shiki must leave alone. */
 export const CELL_CODE_LANGUAGE = 'js-cell';
+
+/**
+ * The longest named cell whose code a printout shows (site/styles/print.css): a definition of the lesson's
+ * inputs (H, parameters, the initial state) is a few lines; longer code computes something the printout shows.
+ */
+export const PRINTED_CODE_LINES = 8;
 
 /** @param {import('mdast').Code} node */
 function isCellFence(node) {
@@ -96,6 +102,7 @@ export function renderCell(source, id, analysis, output) {
   // The element id makes a cell linkable (`/kepler/#cell-stars`); the prefix keeps it apart from headings' ids.
   const properties = { className: ['cell'], id: `cell-${id}`, dataCell: id, dataCellHash: hashSource(source) };
   if (name) properties.dataCellName = name;
+  if (name && lineCount(source) <= PRINTED_CODE_LINES) properties.dataPrintCode = '';
   if ('spec' in analysis) properties.dataCellSpec = JSON.stringify(analysis.spec);
   else properties.dataCellBuildError = analysis.error;
 

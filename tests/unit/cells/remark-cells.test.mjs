@@ -1,5 +1,5 @@
 import { describe, expect, test } from 'vitest';
-import { assignCellIds, hashSource, remarkCells } from '../../../site/lib/remark-cells.mjs';
+import { assignCellIds, hashSource, PRINTED_CODE_LINES, remarkCells } from '../../../site/lib/remark-cells.mjs';
 
 /** Runs the plugin on a hand-made tree of fenced code blocks. */
 async function transform(fences) {
@@ -66,6 +66,17 @@ describe('remarkCells()', () => {
     expect(tree.children[0].data.hProperties.dataCellBuildError).toBe('SyntaxError: Unexpected token (1:4)');
     expect(tree.children[0].data.hProperties.dataCellSpec).toBeUndefined();
     expect(file.messages).toHaveLength(1);
+  });
+});
+
+describe('remarkCells(): which code prints (site/styles/print.css)', () => {
+  test('a short named cell, a definition of the lesson, is marked to print its code; a long or unnamed one is not', async () => {
+    const long = `driveLine = {\n${'  x;\n'.repeat(PRINTED_CODE_LINES)}}`;
+    const { tree } = await transform([['cell', 'H = "p^2/2 + q^2/2"'], ['cell', 'equations(model)'], ['cell', long]]);
+    const [short, unnamed, longer] = tree.children.map((node) => node.data.hProperties);
+    expect(short.dataPrintCode).toBe('');
+    expect(unnamed.dataPrintCode).toBeUndefined();
+    expect(longer.dataPrintCode).toBeUndefined();
   });
 });
 
