@@ -17,9 +17,11 @@
  *    after the cell parser loads;
  * e. cold-cache loads of every page (cold-load.mjs): JavaScript before any
  *    interaction, navigation to the first widget drawn, plain and under
- *    DevTools' Slow 4G with a 4× CPU slowdown, and cumulative layout shift.
+ *    DevTools' Slow 4G with a 4× CPU slowdown, and cumulative layout shift;
+ * f. Lighthouse on every page, mobile and desktop presets (lighthouse.mjs):
+ *    its four scores, TBT, LCP, CLS and the DOM's size.
  *
- * BENCH_ONLY=cold runs part e alone; BENCH_LOADS sets the loads per page and
+ * BENCH_ONLY=cold runs part e alone, BENCH_ONLY=lighthouse part f alone; BENCH_LOADS sets the loads per page and
  * profile (default 3; the median is reported).
  * Builds the site first when dist/ (or PHASEBOOK_OUT_DIR) has none.
  * BENCH_SECONDS sets the measuring window per scenario (default 4 s, after a
@@ -35,11 +37,12 @@ import { cellsReady, launchBrowser } from '../tests/e2e/browser.mjs';
 import { DIST, startServer } from '../tests/e2e/server.mjs';
 import { cell, typeIntoCell } from '../tests/e2e/fixture.mjs';
 import { coldLoad, median, CPU_SLOWDOWN } from './cold-load.mjs';
+import { lighthouseTable } from './lighthouse.mjs';
 
 const ROOT = fileURLToPath(new URL('../', import.meta.url));
 const SECONDS = Number(process.env.BENCH_SECONDS ?? 4);
 const LOADS = Number(process.env.BENCH_LOADS ?? 3);
-const ONLY_COLD = process.env.BENCH_ONLY === 'cold';
+const ONLY = process.env.BENCH_ONLY ?? '';
 const WARM_UP_MS = 2000;
 const FRAME_MS = 1000 / 60;
 
@@ -536,8 +539,13 @@ async function main() {
     print(`Load average (1 min) ${loadBefore.toFixed(2)} before the run: ` +
       `other work on the machine shows up as missed frames, long tasks and slower loads.`);
     print();
-    if (!ONLY_COLD) await interactive(browser, server, print);
-    await coldLoads(browser, server, print);
+    if (!ONLY) await interactive(browser, server, print);
+    if (!ONLY || ONLY === 'cold') await coldLoads(browser, server, print);
+    if (!ONLY || ONLY === 'lighthouse') {
+      print('f. Lighthouse, every page.');
+      print();
+      await lighthouseTable(server.origin, sitePages(), { print, log });
+    }
     print(`Run took ${((Date.now() - started) / 1000).toFixed(0)} s.`);
   } finally {
     await browser.close();
