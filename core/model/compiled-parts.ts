@@ -1,10 +1,14 @@
 /**
- * A running model from compiled-model data (compiled-model.ts): a few
- * `new Function` calls, no mathjs and no acorn.
+ * The parts of a running model from compiled-model data (compiled-model.ts):
+ * a few `new Function` calls, no mathjs and no acorn. The model comes with
+ * RK 3/8's stepper and the parts another method needs; the method itself is
+ * applied by its caller (model-from-compiled.ts), so that a page whose
+ * models all run RK 3/8, the book's default, never loads the other
+ * methods' code (canonical-equations.ts).
  */
 import type { CompiledModel, CompiledRoute } from './compiled-model.ts';
 import { InputError } from '../errors.ts';
-import { applyMethod } from '../integrators/apply.ts';
+import type { MethodParts } from '../integrators/apply.ts';
 import { DEFAULT_METHOD, type MethodChoice } from '../integrators/methods.ts';
 import type { JacobianFunction } from '../integrators/midpoint.ts';
 import { functionFromSource } from '../js-function/function-source.ts';
@@ -34,18 +38,20 @@ function parameterValues(compiled: CompiledModel, params: Readonly<Record<string
 }
 
 /**
- * A running model from compiled data: `params` gives the parameter values,
- * and `hamiltonian`, for a stencil model, the function itself when H was
+ * A running model from compiled data, with RK 3/8's stepper, and the parts
+ * `method` needs beside it: `params` gives the parameter values, and
+ * `hamiltonian`, for a stencil model, the function itself when H was
  * given as one (its source alone would lose what it closes over).
  * `method` is the integration method, by default the one the code was
- * compiled for (RK 3/8 unless compiled.method says otherwise).
+ * compiled for (RK 3/8 unless compiled.method says otherwise); code
+ * compiled for another method than it is refused.
  */
-export function modelFromCompiled(
+export function compiledParts(
   compiled: CompiledModel,
   params: Readonly<Record<string, number>> = {},
   hamiltonian?: string | OpaqueHamiltonian,
   method: MethodChoice = compiled.method ? { name: compiled.method } : DEFAULT_METHOD,
-): Model {
+): { model: Model; parts: MethodParts } {
   const values = parameterValues(compiled, params);
   const common = {
     dof: compiled.dof,
@@ -59,7 +65,7 @@ export function modelFromCompiled(
   };
   if (compiled.route === 'js-stencil') {
     const opaque = typeof hamiltonian === 'function' ? hamiltonian : undefined;
-    return applyMethod(withSummary({ ...common, ...stencilParts(compiled, values, opaque) }), method);
+    return { model: withSummary({ ...common, ...stencilParts(compiled, values, opaque) }), parts: {} };
   }
   const code = compiled.code!;
   // code.stepper is RK 3/8's unless the code was generated for a splitting, whose stepper it then is.
@@ -69,7 +75,7 @@ export function modelFromCompiled(
     throw new Error(`the model was compiled for ${compiled.method ?? 'rk38'}, not for ${method.name}`);
   }
   const advance = new Function(code.stepper)() as Stepper['advance'];
-  const rk38Model = withSummary({
+  const model = withSummary({
     ...common,
     stepper: { dim: common.dim, advance },
     field: new Function(code.field)()(values) as VectorField,
@@ -77,7 +83,7 @@ export function modelFromCompiled(
     latex: compiled.latex,
   });
   const jacobian = code.jacobian ? exactJacobian(code.jacobian, values, common.dim) : undefined;
-  return applyMethod(rk38Model, method, { split: split ? advance : undefined, jacobian });
+  return { model, parts: { split: split ? advance : undefined, jacobian } };
 }
 
 /** The generated Jacobian, written into a zeroed matrix of its own and copied out (its zero entries are never written). */
