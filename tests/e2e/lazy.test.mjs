@@ -185,8 +185,10 @@ async function firstViewScripts(url, simulator) {
   if (simulator) await page.locator(`#${simulator} [data-widget="simulator"][data-ready]`).waitFor({ timeout: 30_000 });
   await page.waitForLoadState('networkidle');
   const loaded = scripts(requests);
+  // Read before closing: closing aborts what is still in flight, which is no problem of the page's.
+  const seen = [...problems];
   await page.close();
-  return { bytes: gzipBytes(loaded), names: loaded.map(chunkOf), problems };
+  return { bytes: gzipBytes(loaded), names: loaded.map(chunkOf), problems: seen };
 }
 
 test('every chapter stays within the JavaScript budgets: its top ≤ 29 KB, a link to its first simulator ≤ 80 KB (gzip)', async (t) => {
