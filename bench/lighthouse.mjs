@@ -8,7 +8,11 @@
  * Lighthouse is timing-based: its numbers belong in this bench, never in a
  * test. Scores vary with the machine's load; the table says what the load was.
  */
-import { launch } from 'chrome-launcher';
+import { spawn } from 'node:child_process';
+import { once } from 'node:events';
+import { mkdtemp, rm } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import lighthouse from 'lighthouse';
 import desktopConfig from 'lighthouse/core/config/desktop-config.js';
 
@@ -19,6 +23,39 @@ export const PRESETS = [
   ['mobile', undefined],
   ['desktop', desktopConfig],
 ];
+
+/**
+ * Chromium listening for DevTools on a free port, in a fresh profile, for
+ * Lighthouse to connect to: started here, so the bench depends on no
+ * launcher package of its own.
+ */
+async function startChromium(chromePath) {
+  const profile = await mkdtemp(join(tmpdir(), 'phasebook-lighthouse-'));
+  const child = spawn(chromePath, [...CHROME_FLAGS, '--remote-debugging-port=0', `--user-data-dir=${profile}`, 'about:blank'], {
+    stdio: ['ignore', 'ignore', 'pipe'],
+  });
+  let said = '';
+  const port = await new Promise((resolve, reject) => {
+    child.stderr.on('data', (chunk) => {
+      said = (said + chunk).slice(-4000);
+      const listening = /DevTools listening on ws:\/\/[^:]+:(\d+)\//.exec(said);
+      if (listening) resolve(Number(listening[1]));
+    });
+    child.once('error', reject);
+    child.once('exit', (code) => reject(new Error(`${chromePath} exited (${code}) before listening: ${said.trim().split('\n').pop()}`)));
+  });
+  return {
+    port,
+    async kill() {
+      if (child.exitCode === null && child.signalCode === null) {
+        const exited = once(child, 'exit');
+        child.kill();
+        await exited;
+      }
+      await rm(profile, { recursive: true, force: true });
+    },
+  };
+}
 
 /** One Lighthouse run of `url` with `config`, reduced to the numbers the table shows. */
 async function audit(url, port, config) {
@@ -53,7 +90,7 @@ async function audit(url, port, config) {
  * progress lines; `print` the report's.
  */
 export async function lighthouseTable(origin, paths, { print, log, chromePath = process.env.CHROMIUM || '/usr/bin/chromium' }) {
-  const chrome = await launch({ chromePath, chromeFlags: CHROME_FLAGS, logLevel: 'silent' });
+  const chrome = await startChromium(chromePath);
   const rows = [];
   try {
     for (const [preset, config] of PRESETS) {
