@@ -21,7 +21,8 @@
  * f. Lighthouse on every page, mobile and desktop presets (lighthouse.mjs):
  *    its four scores, TBT, LCP, CLS and the DOM's size.
  *
- * BENCH_ONLY=cold runs part e alone, BENCH_ONLY=lighthouse part f alone; BENCH_LOADS sets the loads per page and
+ * BENCH_ONLY=cold runs part e alone, BENCH_ONLY=lighthouse part f alone
+ * (BENCH_LIGHTHOUSE_RUNS=N: the median of N runs per page and preset); BENCH_LOADS sets the loads per page and
  * profile (default 3; the median is reported).
  * Builds the site first when dist/ (or PHASEBOOK_OUT_DIR) has none.
  * BENCH_SECONDS sets the measuring window per scenario (default 4 s, after a
