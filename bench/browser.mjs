@@ -20,11 +20,14 @@
  *    DevTools' Slow 4G with a 4× CPU slowdown, and cumulative layout shift;
  * f. first visits (first-visit.mjs): each load a fresh profile, by a link to
  *    a chapter's simulator, with where the time goes up to its first draw.
+ * g. Lighthouse on every page, mobile and desktop presets (lighthouse.mjs):
+ *    its four scores, TBT, LCP, CLS and the DOM's size.
  *
- * BENCH_ONLY=cold runs part e alone, BENCH_ONLY=first part f alone;
- * BENCH_PAGES=/introduction/,/kepler/ limits parts e and f to those pages;
- * BENCH_LOADS sets the loads per page and profile (default 3; the median is
- * reported).
+ * BENCH_ONLY=cold runs part e alone, BENCH_ONLY=first part f alone,
+ * BENCH_ONLY=lighthouse part g alone (BENCH_LIGHTHOUSE_RUNS=N: the median of
+ * N runs per page and preset); BENCH_PAGES=/introduction/,/kepler/ limits
+ * parts e and f to those pages; BENCH_LOADS sets the loads per page and
+ * profile (default 3; the median is reported).
  * Builds the site first when dist/ (or PHASEBOOK_OUT_DIR) has none.
  * BENCH_SECONDS sets the measuring window per scenario (default 4 s, after a
  * 2 s warm-up).
@@ -40,6 +43,7 @@ import { DIST, startServer } from '../tests/e2e/server.mjs';
 import { cell, typeIntoCell } from '../tests/e2e/fixture.mjs';
 import { coldLoad, median, CPU_SLOWDOWN } from './cold-load.mjs';
 import { firstVisits, printFirstVisits } from './first-visit.mjs';
+import { lighthouseTable } from './lighthouse.mjs';
 
 const ROOT = fileURLToPath(new URL('../', import.meta.url));
 const SECONDS = Number(process.env.BENCH_SECONDS ?? 4);
@@ -547,6 +551,11 @@ async function main() {
     const paths = measuredPages();
     const simulators = await firstSimulators(browser.context, server.origin, paths);
     if (!ONLY || ONLY === 'cold') await coldLoads(browser, server, print, paths, simulators);
+    if (!ONLY || ONLY === 'lighthouse') {
+      print('g. Lighthouse, every page.');
+      print();
+      await lighthouseTable(server.origin, sitePages(), { print, log });
+    }
     if (!ONLY || ONLY === 'first') {
       // One browser at a time: the shared one is closed before the first visits start their own.
       await browser.close();

@@ -22,6 +22,7 @@ import { blockedMessage, cellOfSource, recentCell, stackOf } from './cell-errors
 import type { LiveCell } from './cell.ts';
 import { ChapterCells } from './chapter.ts';
 import { watchScrollables } from './scrollables.ts';
+import { colourCodeWhenNear } from './code-tokens.ts';
 import { MathSnapshot, pageIntact } from './integrity.ts';
 import { formatError } from './spec.ts';
 import { currentCellSignal, Notebook } from './runtime.ts';
@@ -170,6 +171,7 @@ function pageSandbox(store: EditStore, cells: () => readonly LiveCell[]) {
 function boot(): void {
   const root = document.querySelector<HTMLElement>('[data-chapter]');
   if (!root) return;
+  colourCodeWhenNear(root);
   // Pasting another shared link into the address bar changes only the fragment: load the page for it.
   addEventListener('hashchange', () => {
     if (isShareFragment(location.hash)) location.reload();

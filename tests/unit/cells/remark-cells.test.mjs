@@ -127,3 +127,30 @@ describe('highlightJs(source)', () => {
     expect(text).toBe('x = {\n  return 1;\n}');
   });
 });
+
+describe('tokenRuns(source), read back by the page (cells/code-tokens.ts readRuns)', () => {
+  const source = 'x = {\n  const s = "a\\u00e9 ∂H/∂p — 𝛼";\n  return s.length + 1; // why\n}';
+
+  test('cut the source into the same tokens, with the same classes, as the spans of the first view', async () => {
+    const { highlightJs, tokenRuns } = await import('../../../site/lib/highlight-js.mjs');
+    const { readRuns } = await import('../../../cells/code-tokens.ts');
+    const spans = highlightJs(source)
+      .filter((node) => node.type === 'element')
+      .map((node) => ({ text: node.children[0].value, classes: node.properties.className.join(' ') }));
+    const pieces = readRuns(tokenRuns(source), source);
+    expect(pieces.map((p) => p.text).join('')).toBe(source);
+    expect(pieces.filter((p) => p.classes)).toEqual(spans);
+    expect(spans.map((s) => s.classes)).toContain('tok-keyword');
+    // Lengths are counted in UTF-16 units on both sides: 𝛼 is two of them.
+    expect(spans.filter((s) => s.classes === 'tok-string').map((s) => s.text)).toEqual(['"a', ' ∂H/∂p — 𝛼"']);
+  });
+
+  test('runs that do not add up to the text leave the code plain', async () => {
+    const { tokenRuns } = await import('../../../site/lib/highlight-js.mjs');
+    const { readRuns } = await import('../../../cells/code-tokens.ts');
+    const runs = tokenRuns(source);
+    expect(readRuns(runs, `${source} `)).toBeNull();
+    expect(readRuns(runs, source.slice(1))).toBeNull();
+    expect(readRuns('3.tok-keyword x', 'abcdef')).toBeNull();
+  });
+});
