@@ -10,6 +10,8 @@ import { bookChunks } from './site/lib/chunks.mjs';
 import { linkedPreloads } from './site/lib/linked-preloads.mjs';
 import { rehypeHeadingAnchors } from './site/lib/rehype-heading-anchors.mjs';
 import { searchIndex } from './site/lib/search-index.mjs';
+import { failLoudly } from './site/lib/fail-loudly.mjs';
+import { staticOnly } from './site/lib/static-only.mjs';
 
 const CORE = fileURLToPath(new URL('./core/', import.meta.url));
 
@@ -61,7 +63,8 @@ export default defineConfig({
   // The site's pages, layouts and build-time code; the book's browser code is in cells/ and widgets/.
   srcDir: './site',
   site: 'http://localhost:4321',
-  ...(outDir ? { outDir } : {}),
+  // Astro's own cache (the content store) goes beside the output too: in node_modules/ it would be shared.
+  ...(outDir ? { outDir, cacheDir: `${outDir}.astro-cache` } : {}),
   ...(base ? { base } : {}),
   output: 'static',
   trailingSlash: 'always',
@@ -83,7 +86,8 @@ export default defineConfig({
     },
   },
   // searchIndex after linkedPreloads: the index is built from the pages as they are served.
-  integrations: [mdx(), linkedPreloads(), searchIndex()],
+  // staticOnly last: it takes Astro's server code out of what the others wrote.
+  integrations: [mdx(), failLoudly(), linkedPreloads(), searchIndex(), staticOnly()],
   vite: {
     ...(outDir ? { cacheDir: `${outDir}/.vite-cache` } : {}),
     // Workers (the stability chart's) load mathjs lazily, so they need ES modules to split chunks.
