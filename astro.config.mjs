@@ -12,6 +12,7 @@ import { rehypeHeadingAnchors } from './site/lib/rehype-heading-anchors.mjs';
 import { searchIndex } from './site/lib/search-index.mjs';
 import { failLoudly } from './site/lib/fail-loudly.mjs';
 import { staticOnly } from './site/lib/static-only.mjs';
+import { recordFingerprint } from './site/lib/build-fingerprint.mjs';
 
 const CORE = fileURLToPath(new URL('./core/', import.meta.url));
 
@@ -86,8 +87,8 @@ export default defineConfig({
     },
   },
   // searchIndex after linkedPreloads: the index is built from the pages as they are served.
-  // staticOnly last: it takes Astro's server code out of what the others wrote.
-  integrations: [mdx(), failLoudly(), linkedPreloads(), searchIndex(), staticOnly()],
+  // staticOnly after the others: it takes Astro's server code out of what they wrote; the fingerprint is recorded last, once all went well.
+  integrations: [mdx(), failLoudly(), linkedPreloads(), searchIndex(), staticOnly(), recordFingerprint()],
   vite: {
     ...(outDir ? { cacheDir: `${outDir}/.vite-cache` } : {}),
     // Workers (the stability chart's) load mathjs lazily, so they need ES modules to split chunks.
