@@ -36,7 +36,6 @@ import { describeCell, formatError } from '../../cells/index.ts';
 import { highlightJs } from './highlight-js.mjs';
 import { precompileChapter } from './precompile.ts';
 import { chapterProblems, reportChapter, FAILS_MARK } from './cell-failures.ts';
-import { relative, isAbsolute } from 'node:path';
 import { PAGE_DATA_ATTRIBUTE } from '../../widgets/index.ts';
 
 /** hast's name for the data attribute (`data-phasebook-page-data` → dataPhasebookPageData). */
@@ -215,8 +214,9 @@ function pageDataNode(data) {
  * @param {string} path
  */
 function shownPath(path) {
-  const inside = relative(process.cwd(), path);
-  return inside && !inside.startsWith('..') && !isAbsolute(inside) ? inside : path;
+  // No node:path here: the VS Code extension bundles this module for the browser (vscode/build/book-modules.ts).
+  const root = `${process.cwd().replace(/[\\/]+$/, '')}/`;
+  return path.replace(/\\/g, '/').startsWith(root.replace(/\\/g, '/')) ? path.slice(root.length) : path;
 }
 
 /**
