@@ -48,6 +48,34 @@ function katexWithoutFontFaces() {
 }
 
 /**
+ * The book's chunks (site/lib/chunks.mjs), for the browser's build only. The
+ * build that renders the pages on the server runs the same modules; grouped
+ * there, the groups it tree-shakes away became empty chunks (a warning each)
+ * and its `boot` group a chunk written among the pages.
+ * @returns {import('vite').Plugin}
+ */
+function clientChunks() {
+  return {
+    name: 'phasebook:client-chunks',
+    config(_config, { isSsrBuild }) {
+      if (isSsrBuild) return null;
+      return {
+        build: {
+          rollupOptions: {
+            output: {
+              manualChunks: bookChunks(),
+              // The book's modules are all grouped; this merges the small pieces Rollup cuts from
+              // third-party code loaded on demand, each of which would cost a round trip.
+              experimentalMinChunkSize: 20_000,
+            },
+          },
+        },
+      };
+    },
+  };
+}
+
+/**
  * PHASEBOOK_OUT_DIR lets several builds run side by side (each with its own
  * output and caches) without wiping each other's dist/.
  */
@@ -93,18 +121,12 @@ export default defineConfig({
     ...(outDir ? { cacheDir: `${outDir}/.vite-cache` } : {}),
     // Workers (the stability chart's) load mathjs lazily, so they need ES modules to split chunks.
     worker: { format: 'es', rollupOptions: { treeshake: { moduleSideEffects: coreIsPure } } },
-    plugins: [katexWithoutFontFaces()],
+    plugins: [katexWithoutFontFaces(), clientChunks()],
     build: {
       // PHASEBOOK_SOURCEMAP=1 writes source maps, to see which modules make up each chunk's bytes.
       sourcemap: !!process.env.PHASEBOOK_SOURCEMAP,
       rollupOptions: {
         treeshake: { moduleSideEffects: coreIsPure },
-        output: {
-          manualChunks: bookChunks(),
-          // The book's modules are all grouped (site/lib/chunks.mjs); this merges the small pieces Rollup
-          // cuts from third-party code loaded on demand, each of which would cost a round trip.
-          experimentalMinChunkSize: 20_000,
-        },
       },
     },
   },

@@ -25,7 +25,8 @@ const FIXTURES = fileURLToPath(new URL('./fixtures/', import.meta.url));
 async function buildChapters(contentDir) {
   const out = await mkdtemp(join(tmpdir(), 'phasebook-build-test-'));
   try {
-    const child = spawn('npx', ['astro', 'build'], {
+    // Astro itself, not through npx, whose own notices are not the build's.
+    const child = spawn(process.execPath, [join(ROOT, 'node_modules', 'astro', 'astro.js'), 'build'], {
       cwd: ROOT,
       env: { ...process.env, PHASEBOOK_CONTENT_DIR: contentDir, PHASEBOOK_OUT_DIR: out, ASTRO_TELEMETRY_DISABLED: '1', NO_COLOR: '1', FORCE_COLOR: '0' },
       stdio: ['ignore', 'pipe', 'pipe'],
