@@ -70,8 +70,9 @@ test('npm run dev serves a chapter, and an edit to its file shows in the open pa
   const page = await browser.context.newPage();
   await page.goto(`${origin}/introduction/`);
   await page.getByRole('heading', { level: 1, name: 'Introduction' }).waitFor();
-  // The chapter's cells run under the dev server too: the first simulator draws.
-  await page.locator('[data-cell="sim"] [data-widget="simulator"]').waitFor();
+  // The chapter's cells run under the dev server too: brought into view (cells start near it), the simulator is there.
+  await page.locator('[data-cell="sim"]').scrollIntoViewIfNeeded();
+  await page.locator('[data-cell="sim"] [data-widget="simulator"]').waitFor({ timeout: 120_000 });
 
   const edited = 'Hamilton describes it, as this edit says, by a single function';
   const text = await readFile(chapter, 'utf8');
