@@ -40,6 +40,7 @@ async function buildChapters(contentDir) {
   } finally {
     await rm(out, { recursive: true, force: true });
     await rm(`${out}.astro-cache`, { recursive: true, force: true });
+    await rm(`${out}.fingerprint.json`, { force: true });
   }
 }
 
