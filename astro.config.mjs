@@ -10,6 +10,9 @@ import { bookChunks } from './site/lib/chunks.mjs';
 import { linkedPreloads } from './site/lib/linked-preloads.mjs';
 import { rehypeHeadingAnchors } from './site/lib/rehype-heading-anchors.mjs';
 import { searchIndex } from './site/lib/search-index.mjs';
+import { failLoudly } from './site/lib/fail-loudly.mjs';
+import { staticOnly } from './site/lib/static-only.mjs';
+import { recordFingerprint } from './site/lib/build-fingerprint.mjs';
 
 const CORE = fileURLToPath(new URL('./core/', import.meta.url));
 
@@ -44,6 +47,34 @@ function katexWithoutFontFaces() {
 }
 
 /**
+ * The book's chunks (site/lib/chunks.mjs), for the browser's build only. The
+ * build that renders the pages on the server runs the same modules; grouped
+ * there, the groups it tree-shakes away became empty chunks (a warning each)
+ * and its `boot` group a chunk written among the pages.
+ * @returns {import('vite').Plugin}
+ */
+function clientChunks() {
+  return {
+    name: 'phasebook:client-chunks',
+    config(_config, { isSsrBuild }) {
+      if (isSsrBuild) return null;
+      return {
+        build: {
+          rollupOptions: {
+            output: {
+              manualChunks: bookChunks(),
+              // The book's modules are all grouped; this merges the small pieces Rollup cuts from
+              // third-party code loaded on demand, each of which would cost a round trip.
+              experimentalMinChunkSize: 20_000,
+            },
+          },
+        },
+      };
+    },
+  };
+}
+
+/**
  * PHASEBOOK_OUT_DIR lets several builds run side by side (each with its own
  * output and caches) without wiping each other's dist/.
  */
@@ -60,7 +91,8 @@ export default defineConfig({
   // The site's pages, layouts and build-time code; the book's browser code is in cells/ and widgets/.
   srcDir: './site',
   site: 'http://localhost:4321',
-  ...(outDir ? { outDir } : {}),
+  // Astro's own cache (the content store) goes beside the output too: in node_modules/ it would be shared.
+  ...(outDir ? { outDir, cacheDir: `${outDir}.astro-cache` } : {}),
   ...(base ? { base } : {}),
   output: 'static',
   trailingSlash: 'always',
@@ -82,23 +114,18 @@ export default defineConfig({
     },
   },
   // searchIndex after linkedPreloads: the index is built from the pages as they are served.
-  integrations: [mdx(), linkedPreloads(), searchIndex()],
+  // staticOnly after the others: it takes Astro's server code out of what they wrote; the fingerprint is recorded last, once all went well.
+  integrations: [mdx(), failLoudly(), linkedPreloads(), searchIndex(), staticOnly(), recordFingerprint()],
   vite: {
     ...(outDir ? { cacheDir: `${outDir}/.vite-cache` } : {}),
     // Workers (the stability chart's) load mathjs lazily, so they need ES modules to split chunks.
     worker: { format: 'es', rollupOptions: { treeshake: { moduleSideEffects: coreIsPure } } },
-    plugins: [katexWithoutFontFaces()],
+    plugins: [katexWithoutFontFaces(), clientChunks()],
     build: {
       // PHASEBOOK_SOURCEMAP=1 writes source maps, to see which modules make up each chunk's bytes.
       sourcemap: !!process.env.PHASEBOOK_SOURCEMAP,
       rollupOptions: {
         treeshake: { moduleSideEffects: coreIsPure },
-        output: {
-          manualChunks: bookChunks(),
-          // The book's modules are all grouped (site/lib/chunks.mjs); this merges the small pieces Rollup
-          // cuts from third-party code loaded on demand, each of which would cost a round trip.
-          experimentalMinChunkSize: 20_000,
-        },
       },
     },
   },

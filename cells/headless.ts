@@ -86,7 +86,8 @@ export async function runHeadless(
       try {
         return { value: await valueOf(definers[0], path) };
       } catch (error) {
-        throw new HeadlessError(`input ${input} failed: ${(error as Error)?.message ?? String(error)}`);
+        // The cause travels along, so that the build can tell a cell's own failure from its input's.
+        throw new HeadlessError(`input ${input} failed: ${(error as Error)?.message ?? String(error)}`, { cause: error });
       }
     }
     if (Object.hasOwn(builtins, input)) return { value: builtins[input] };

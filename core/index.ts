@@ -74,7 +74,7 @@ export { BlowUpError, InputError } from './errors.ts';
 export { ParseError } from './tables/parse-error.ts';
 export { type ExportMeta, methodMeta } from './tables/export-meta.ts';
 export { type EvaluationFault, firstEvaluation } from './model/first-evaluation.ts';
-export { checkName, stateNames } from './expression/names.ts';
+export { checkName, stateNames, RESERVED_NAMES, type ReservedName } from './expression/names.ts';
 export { provideMathjs } from './expression/mathjs.ts';
 export { applyMethod } from './integrators/apply.ts';
 export { DEFAULT_METHOD, methodChoice, type MethodChoice, type MethodName } from './integrators/methods.ts';

@@ -18,8 +18,15 @@ import { defineCollection } from 'astro:content';
 import { glob } from 'astro/loaders';
 import { chapterSchema } from './lib/chapter-schema';
 
+/**
+ * PHASEBOOK_CONTENT_DIR builds the book from another folder of chapters: the
+ * tests build broken chapters, and edit copies of chapters under the dev
+ * server, without touching content/.
+ */
+const CONTENT_DIR = process.env.PHASEBOOK_CONTENT_DIR || './content';
+
 const chapters = defineCollection({
-  loader: glob({ pattern: '**/*.mdx', base: './content' }),
+  loader: glob({ pattern: '**/*.mdx', base: CONTENT_DIR }),
   schema: chapterSchema,
 });
 

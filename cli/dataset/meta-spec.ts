@@ -152,7 +152,7 @@ function parameters(read: MetaReader): Record<string, number> {
   const params: Record<string, number> = {};
   for (const [name, value] of Object.entries(v)) {
     try {
-      checkName(name);
+      checkName(name, 'parameter');
     } catch (error) {
       throw read.bad(`has a parameter whose name ${(error as Error).message}`);
     }

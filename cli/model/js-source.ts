@@ -29,7 +29,7 @@ export function functionFromArgument(
   const paramNames = Object.keys(params);
   for (const name of paramNames) {
     try {
-      checkName(name);
+      checkName(name, 'parameter');
     } catch (error) {
       throw new InputError(`the parameter ${(error as Error).message}`);
     }

@@ -23,7 +23,7 @@ export function parameters(pairs: readonly string[], stateNames: readonly string
     const name = pair.slice(0, eq).trim();
     const text = pair.slice(eq + 1);
     try {
-      checkName(name);
+      checkName(name, 'parameter');
     } catch (error) {
       const ascii = /^[\x20-\x7e]*$/.test(name) ? '' : ' (a name is ASCII letters, digits and _: write omega, not ω)';
       throw new InputError(`the parameter name ${(error as Error).message.replace(/^"[^"]*" /, `"${name}" `)}${ascii}`);

@@ -104,7 +104,7 @@ export function parseHamiltonian(math: MathJs, spec: ExpressionSpec): ParsedHami
   const { names, aliases } = stateNames(spec.dof, spec.coordinates, spec.momenta);
   const paramNames = spec.paramNames ?? [];
   for (const name of paramNames) {
-    checkName(name);
+    checkName(name, 'parameter');
     if (names.includes(name)) throw new InputError(`the parameter ${name} has the name of a state component`);
   }
   const hamiltonian = prepare(math, parseExpression(math, spec.source), names, aliases, paramNames);

@@ -88,7 +88,7 @@ export function functionFromSource(
   paramNames: readonly string[],
   params: Float64Array,
 ): { hamiltonian: OpaqueHamiltonian; sync: () => void } {
-  paramNames.forEach(checkName);
+  paramNames.forEach((name) => checkName(name, 'parameter'));
   const shadowed = MATH_NAMES.filter((n) => !paramNames.includes(n));
   const body = [
     '"use strict";',

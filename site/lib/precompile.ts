@@ -43,8 +43,33 @@ export interface ChapterWork {
   readonly data: PageData | null;
   /** HTML for the outputs of cells whose value is a formula, by cell id. */
   readonly outputs: ReadonlyMap<string, string>;
-  /** Why cells failed at build time, by cell id: for authors, never shown to readers. */
-  readonly failures: ReadonlyMap<string, string>;
+  /** How each cell ended at build time, by cell id: for the build's report to authors (cell-failures.ts). */
+  readonly outcomes: ReadonlyMap<string, BuildOutcome>;
+}
+
+/** How a cell ended when the build ran it. */
+export type BuildOutcome =
+  /** It gave a value. */
+  | { readonly kind: 'ran' }
+  /** Its own code failed: the page will fail the same way. */
+  | { readonly kind: 'failed'; readonly message: string }
+  /** An input failed; that cell's outcome says why. */
+  | { readonly kind: 'input failed' }
+  /** It needs the page (a widget, the DOM), directly or through an input, so the build did not run it. */
+  | { readonly kind: 'page only' };
+
+/** The error at the end of a chain of `cause`s: what first went wrong. */
+function rootOf(error: Error): Error {
+  let root = error;
+  while (root.cause instanceof Error) root = root.cause;
+  return root;
+}
+
+function outcomeOf(error: Error): BuildOutcome {
+  const root = rootOf(error);
+  if (root instanceof NotAtBuildTime) return { kind: 'page only' };
+  if (root !== error) return { kind: 'input failed' };
+  return { kind: 'failed', message: `${error.name}: ${error.message}` };
 }
 
 // Astro runs this from its config, whose module loader is closed by the time
@@ -143,11 +168,10 @@ export async function precompileChapter(cells: readonly HeadlessCell[]): Promise
 
   const results = await runHeadless(cells, builtins, { timeoutMs: 20_000 });
   const outputs = new Map<string, string>();
-  const failures = new Map<string, string>();
+  const outcomes = new Map<string, BuildOutcome>();
   for (const [id, result] of results) {
-    if ('error' in result) {
-      failures.set(id, `${result.error.name}: ${result.error.message}`);
-    } else if (isPrerendered(result.value)) {
+    outcomes.set(id, 'error' in result ? outcomeOf(result.error) : { kind: 'ran' });
+    if ('value' in result && isPrerendered(result.value)) {
       const { html, keys } = result.value[PRERENDERED];
       outputs.set(id, html);
       // The page finds these formulas in the cell's output; the table need not carry them twice.
@@ -156,5 +180,5 @@ export async function precompileChapter(cells: readonly HeadlessCell[]): Promise
   }
   const data: PageData | null =
     models.length || typeset.size ? { format: PAGE_DATA_FORMAT, models, typeset: Object.fromEntries(typeset) } : null;
-  return { data, outputs, failures };
+  return { data, outputs, outcomes };
 }

@@ -4,8 +4,8 @@
  * The cell is parsed HERE, at build time, and the parse result travels with
  * the page as `data-cell-spec`, so the first page load ships neither the
  * Observable parser nor the editor (see cells/boot.ts for the client
- * half). A cell the parser rejects still renders, with its error, rather than
- * failing the build.
+ * half). A cell the parser rejects still renders, with its error, and the
+ * build reports it (see below).
  *
  * Emitted markup (the contract the client and the e2e tests rely on):
  *
@@ -24,6 +24,10 @@
  * The id is the cell's name, or `cell-N` for the N-th cell of the chapter when
  * it has no name: it survives edits to the source, so a reader's saved edit
  * can still be found (and offered) after the author changes the cell.
+ *
+ * A cell that fails at build time, a syntax error and a cell without a name
+ * fail the build (cell-failures.ts, fail-loudly.mjs), unless the fence says
+ * the failure is the lesson: ```` ```js cell fails ````.
  */
 import { createHash } from 'node:crypto';
 import { parseCell } from '@observablehq/parser';
@@ -31,6 +35,7 @@ import { fromHtmlIsomorphic } from 'hast-util-from-html-isomorphic';
 import { describeCell, formatError } from '../../cells/index.ts';
 import { highlightJs, tokenRuns } from './highlight-js.mjs';
 import { precompileChapter } from './precompile.ts';
+import { chapterProblems, reportChapter, FAILS_MARK } from './cell-failures.ts';
 import { PAGE_DATA_ATTRIBUTE } from '../../widgets/index.ts';
 
 /** hast's name for the data attribute (`data-phasebook-page-data` → dataPhasebookPageData). */
@@ -77,7 +82,7 @@ export function hashSource(source) {
 }
 
 /**
- * Parses one cell; a syntax error becomes part of the page, not a build failure.
+ * Parses one cell; a syntax error becomes part of the page (and of the build's report).
  * @param {string} source
  * @returns {{ spec: import('../../cells/spec.ts').CellSpec } | { error: string }}
  */
@@ -176,7 +181,7 @@ export function remarkCells() {
    * @param {import('vfile').VFile} file
    */
   return async (tree, file) => {
-    /** @type {Array<{ parent: import('mdast').Parent, index: number, source: string, analysis: ReturnType<typeof analyzeCell> }>} */
+    /** @type {Array<{ parent: import('mdast').Parent, index: number, source: string, analysis: ReturnType<typeof analyzeCell>, failureIsTheLesson: boolean }>} */
     const found = [];
     collectCells(tree, found);
 
@@ -184,8 +189,16 @@ export function remarkCells() {
     const work = await precompileChapter(
       found.flatMap(({ source, analysis }, i) => ('spec' in analysis ? [{ id: ids[i], source, spec: analysis.spec }] : [])),
     );
+    const cells = found.map(({ parent, index, analysis, failureIsTheLesson }, i) => ({
+      id: ids[i],
+      line: parent.children[index].position?.start.line ?? 0,
+      named: 'spec' in analysis && !!analysis.spec.name,
+      failureIsTheLesson,
+      ...('error' in analysis ? { syntaxError: analysis.error } : {}),
+    }));
+    const chapter = file.path ? shownPath(file.path) : '(chapter)';
+    reportChapter(chapter, chapterProblems(chapter, cells, work.outcomes));
     found.forEach(({ parent, index, source, analysis }, i) => {
-      if ('error' in analysis) file.message(`cell ${ids[i]}: ${analysis.error}`, parent.children[index]);
       const colourLater = parent !== tree || index >= FIRST_VIEW_BLOCKS;
       const cell = renderCell(source, ids[i], analysis, work.outputs.get(ids[i]), { colourLater });
       // An unknown mdast node with hName/hProperties/hChildren becomes exactly this element.
@@ -215,17 +228,29 @@ function pageDataNode(data) {
 }
 
 /**
+ * A chapter's path as the build's report names it: from the project's root when it is inside.
+ * @param {string} path
+ */
+function shownPath(path) {
+  // No node:path here: the VS Code extension bundles this module for the browser (vscode/build/book-modules.ts).
+  const root = `${process.cwd().replace(/[\\/]+$/, '')}/`;
+  return path.replace(/\\/g, '/').startsWith(root.replace(/\\/g, '/')) ? path.slice(root.length) : path;
+}
+
+/**
  * Every cell fence under `parent`, in document order, with its source as the
- * page gets it and its parse. Exported for the VS Code extension (vscode/),
- * which finds and checks a chapter's cells exactly as the build does.
+ * page gets it, its parse, and whether its fence marks its failure as the
+ * lesson. Exported for the VS Code extension (vscode/), which finds and
+ * checks a chapter's cells exactly as the build does.
  * @param {import('mdast').Parent} parent
- * @param {Array<{ parent: import('mdast').Parent, index: number, source: string, analysis: ReturnType<typeof analyzeCell> }>} found
+ * @param {Array<{ parent: import('mdast').Parent, index: number, source: string, analysis: ReturnType<typeof analyzeCell>, failureIsTheLesson: boolean }>} found
  */
 export function collectCells(parent, found) {
   parent.children.forEach((child, index) => {
     if (child.type === 'code' && isCellFence(child)) {
       const source = child.value.replace(/^\n+/, '').trimEnd();
-      found.push({ parent, index, source, analysis: analyzeCell(source) });
+      const failureIsTheLesson = /** @type {string} */ (child.meta).split(/\s+/).includes(FAILS_MARK);
+      found.push({ parent, index, source, analysis: analyzeCell(source), failureIsTheLesson });
     } else if ('children' in child) {
       collectCells(child, found);
     }

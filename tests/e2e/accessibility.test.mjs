@@ -70,7 +70,7 @@ test('with reduced motion asked for, a chart its cell animates holds its first p
   await page.emulateMedia({ reducedMotion: 'reduce' });
   await page.goto(`${site.origin}/introduction/`);
   await cellsReady(page);
-  const figure = cell(page, 'cell-5').locator('[data-widget="chart"][data-ready]');
+  const figure = cell(page, 'phasePortrait').locator('[data-widget="chart"][data-ready]');
   await figure.scrollIntoViewIfNeeded();
   const toggle = figure.locator('.pb-chart-tools button[data-motion]');
   await toggle.waitFor();
@@ -85,7 +85,7 @@ test('with reduced motion asked for, a chart its cell animates holds its first p
   assert.equal(await state(), held);
   await toggle.click();
   assert.equal(await toggle.textContent(), 'Pause');
-  await page.waitForFunction((q) => document.querySelector('[data-cell="cell-5"] [data-widget="chart"]').chart.series[1].curves[0].x[0] !== q, held);
+  await page.waitForFunction((q) => document.querySelector('[data-cell="phasePortrait"] [data-widget="chart"]').chart.series[1].curves[0].x[0] !== q, held);
   await page.close();
 });
 

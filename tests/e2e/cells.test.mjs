@@ -18,9 +18,9 @@ test('cells show their first values: numbers inspected, html as DOM', async () =
   const { page, problems } = await openChapter(site, '/introduction/');
   assert.equal(await outputOf(page, 'omega'), 'omega = 10');
   assert.equal(await outputOf(page, 'period'), PERIOD_OF(10));
-  assert.equal(await cell(page, 'cell-3').locator('[data-cell-output] > p strong').textContent(), '0.628');
+  assert.equal(await cell(page, 'periodText').locator('[data-cell-output] > p strong').textContent(), '0.628');
   // The phase-space figure is the book's chart: the orbit and the state now, on the unit circle.
-  const figure = cell(page, 'cell-5').locator('[data-cell-output] > [data-widget="chart"][data-ready]');
+  const figure = cell(page, 'phasePortrait').locator('[data-cell-output] > [data-widget="chart"][data-ready]');
   await figure.waitFor();
   const drawn = await figure.evaluate((f) => ({
     role: f.querySelector('canvas').getAttribute('role'),
@@ -45,9 +45,9 @@ test('cells show their first values: numbers inspected, html as DOM', async () =
 /** The state the phase-space chart shows now, and the figure showing it (marked, so a new figure would be seen). */
 const stateShown = (page) =>
   page.evaluate(() => {
-    const f = document.querySelector('[data-cell="cell-5"] [data-widget="chart"]');
+    const f = document.querySelector('[data-cell="phasePortrait"] [data-widget="chart"]');
     const c = f?.chart.series[1].curves[0];
-    return { q: c?.x[0], p: c?.y[0], same: f?.dataset.marked === '', count: document.querySelectorAll('[data-cell="cell-5"] [data-cell-output] > *').length };
+    return { q: c?.x[0], p: c?.y[0], same: f?.dataset.marked === '', count: document.querySelectorAll('[data-cell="phasePortrait"] [data-cell-output] > *').length };
   });
 
 test('generator cells animate: the chart fed by one is updated in place, frame after frame', async () => {
@@ -55,12 +55,12 @@ test('generator cells animate: the chart fed by one is updated in place, frame a
   const first = await outputOf(page, 'phase');
   assert.match(first, /^phase = \{t: /);
   await waitForOutput(page, 'phase', (text) => text !== first);
-  await cell(page, 'cell-5').locator('[data-widget="chart"][data-ready]').evaluate((f) => (f.dataset.marked = ''));
+  await cell(page, 'phasePortrait').locator('[data-widget="chart"][data-ready]').evaluate((f) => (f.dataset.marked = ''));
   const start = await stateShown(page);
   // Some frames later the point has moved along the circle, in the same figure (no figure rebuilt per frame).
   await page.waitForFunction(
     (before) => {
-      const c = document.querySelector('[data-cell="cell-5"] [data-widget="chart"]')?.chart.series[1].curves[0];
+      const c = document.querySelector('[data-cell="phasePortrait"] [data-widget="chart"]')?.chart.series[1].curves[0];
       return c && c.x[0] !== before.q && c.y[0] !== before.p;
     },
     start,
@@ -76,7 +76,7 @@ test('generator cells animate: the chart fed by one is updated in place, frame a
 
 test('an animated chart offers Pause: paused, it holds its picture while the cell runs on; Play resumes', async () => {
   const { page, problems } = await openChapter(site, '/introduction/');
-  const toggle = cell(page, 'cell-5').locator('.pb-chart-tools button[data-motion]');
+  const toggle = cell(page, 'phasePortrait').locator('.pb-chart-tools button[data-motion]');
   await toggle.waitFor();
   assert.equal(await toggle.textContent(), 'Pause');
   await toggle.click();
@@ -88,7 +88,7 @@ test('an animated chart offers Pause: paused, it holds its picture while the cel
   assert.deepEqual(await stateShown(page), held);
   await toggle.click();
   assert.equal(await toggle.textContent(), 'Pause');
-  await page.waitForFunction((before) => document.querySelector('[data-cell="cell-5"] [data-widget="chart"]')?.chart.series[1].curves[0].x[0] !== before, held.q);
+  await page.waitForFunction((before) => document.querySelector('[data-cell="phasePortrait"] [data-widget="chart"]')?.chart.series[1].curves[0].x[0] !== before, held.q);
   assert.deepEqual(problems, []);
   await page.close();
 });
@@ -98,11 +98,11 @@ test('editing a cell re-runs the cells that use it (Shift+Enter and Run)', async
   await typeIntoCell(page, 'omega', 'omega = 5', { run: 'keys' });
   await waitForOutput(page, 'period', (text) => text === PERIOD_OF(5));
   assert.equal(await outputOf(page, 'omega'), 'omega = 5');
-  assert.equal(await cell(page, 'cell-3').locator('strong').textContent(), '1.257');
+  assert.equal(await cell(page, 'periodText').locator('strong').textContent(), '1.257');
 
   await typeIntoCell(page, 'omega', 'omega = 2 * 10', { run: 'button' });
   await waitForOutput(page, 'period', (text) => text === PERIOD_OF(20));
-  assert.equal(await cell(page, 'cell-3').locator('strong').textContent(), '0.314');
+  assert.equal(await cell(page, 'periodText').locator('strong').textContent(), '0.314');
   assert.deepEqual(problems, []);
   await page.close();
 });

@@ -5,7 +5,9 @@
  * computed here; an edit of the amplitude re-runs the check.
  */
 import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
 import { test } from 'node:test';
+import { fileURLToPath } from 'node:url';
 import { assertAgrees, drawnPixels, resetCell, theoryCheckIn, useChapter } from './chapter-checks.mjs';
 import { errorOf, typeIntoCell } from './fixture.mjs';
 
@@ -55,4 +57,17 @@ test('editing the amplitude re-runs the period check, which still agrees', async
   assertPeriod(await periodCheck(), 2, 1.5);
   assert.deepEqual(problems, []);
   await resetCell(page, 'pendulumStart');
+});
+
+test('the table of reserved names is the list the compiler refuses (core/expression/names.ts), each with its meaning', async () => {
+  const root = fileURLToPath(new URL('../../', import.meta.url));
+  // The core's list, read by the core itself (TypeScript, so through tsx).
+  const source = JSON.parse(
+    execFileSync(process.execPath, ['--import', 'tsx', '--eval', "import('./core/index.ts').then((c) => console.log(JSON.stringify(c.RESERVED_NAMES)))"], { cwd: root, encoding: 'utf8' }),
+  );
+  const rows = await page.locator('[data-reserved-names] tbody tr').evaluateAll((trs) =>
+    trs.map((tr) => ({ names: [...tr.querySelectorAll('[data-reserved-name]')].map((c) => c.textContent), meaning: tr.cells[1].textContent })),
+  );
+  assert.deepEqual(rows.flatMap(({ names, meaning }) => names.map((name) => ({ name, meaning }))), source);
+  assert.ok(source.some(({ name, meaning }) => name === 'E' && meaning.startsWith("Euler's number")));
 });

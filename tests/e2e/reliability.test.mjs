@@ -129,7 +129,7 @@ test('a blow-up pauses the widget with a message naming t and the component; the
 
   // The rest of the page: the equations are still shown, another cell still runs.
   assert.equal(await errorOf(page, 'sim'), '');
-  assert.match(await cell(page, 'cell-6').locator('[data-widget="equations"]').textContent(), /q\^?/);
+  assert.match(await cell(page, 'hamiltonsEquations').locator('[data-widget="equations"]').textContent(), /q\^?/);
   await typeIntoCell(page, 'H0', 'H0 = 6 * 7');
   await waitForOutput(page, 'H0', (text) => text === 'H0 = 42');
   assert.equal((await widget(page)).alert, stopped.alert, 'the stopped widget keeps its message');
