@@ -11,7 +11,7 @@ import assert from 'node:assert/strict';
 import { readdirSync, readFileSync, statSync } from 'node:fs';
 import { join, relative, sep } from 'node:path';
 import { after, before, test } from 'node:test';
-import { cellsReady, launchBrowser, watchPage } from './browser.mjs';
+import { cellsReady, firstViewReady, launchBrowser, watchPage } from './browser.mjs';
 import { BASE, BASE_DIST, ensureBaseBuild } from './base-build.mjs';
 import { cell, typeIntoCell } from './fixture.mjs';
 import { search } from './search-helpers.mjs';
@@ -117,8 +117,9 @@ test('under a base path, every page: each link, asset, font, worker and request 
     const { problems, requests } = watchPage(page);
     await page.goto(`${server.origin}${path}`);
     await page.waitForLoadState('load');
-    // Every cell run, so that every widget has asked for its chunks and workers.
-    if (await page.locator('[data-cell]').count()) await cellsReady(page);
+    // Every cell run, so that every widget has asked for its chunks and workers; an embed's cells are all in view.
+    if (path.includes('/embed/')) await firstViewReady(page);
+    else if (await page.locator('[data-cell]').count()) await cellsReady(page);
     found.push(...(await page.evaluate(namedUrls)).map((u) => ({ where: path, ...u })));
     found.push(...requests.filter((url) => !url.startsWith('data:') && !url.startsWith('blob:')).map((url) => ({ where: path, kind: 'request', url })));
     problemsSeen.push(...problems.map((p) => `${path}: ${p}`));
@@ -141,6 +142,7 @@ test('under a base path, every page: each link, asset, font, worker and request 
   const count = (pattern) => paths.filter((p) => pattern.test(p)).length;
   t.diagnostic(`${pages.length} pages, ${local.size} distinct URLs: ${count(/\.woff2$/)} fonts, ${count(/-worker-[\w-]+\.js$/)} workers, ${count(/\/_astro\/.*\.js$/)} scripts, ${count(/\/pagefind\//)} search files`);
   assert.ok(pages.length >= 13, `${pages.length} pages`);
+  assert.ok(pages.some((path) => path === `${BASE}embed/introduction/sim/`), 'the embed pages');
   for (const chapter of ['introduction', 'kepler', 'order-and-chaos', 'for-teachers']) assert.ok(paths.includes(`${BASE}${chapter}/`), `a link to ${chapter}`);
   assert.ok(count(/\.woff2$/) >= 4, 'fonts');
   assert.ok(count(/-worker-[\w-]+\.js$/) >= 3, 'workers: search, and the widgets that compute in one');
