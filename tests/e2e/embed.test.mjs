@@ -202,7 +202,9 @@ test('the embed page: axe finds no violation, folded and unfolded, at 1100 and 3
   await page.evaluate(AXE);
   const axe = () => page.evaluate(async () => (await window.axe.run(document, { resultTypes: ['violations'] })).violations.map((v) => `${v.id}: ${v.nodes.map((n) => n.target).join(' ')}`));
   assert.deepEqual(await axe(), []);
-  await page.locator('details[data-embed-uses] > summary').click();
+  const summary = page.locator('details[data-embed-uses] > summary');
+  assert.ok((await summary.boundingBox()).height >= 24, 'the fold is a target of 24 px or more');
+  await summary.click();
   await page.locator('[data-cell="params"] .cell-code').waitFor();
   assert.deepEqual(await axe(), []);
   // In a narrow iframe, as a phone shows one.
