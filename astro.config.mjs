@@ -28,9 +28,8 @@ function coreIsPure(id) {
 
 /**
  * Takes KaTeX's @font-face rules out of its stylesheet: site/lib/fonts.ts
- * declares the same faces with the book's loading rules (font-display
- * optional, nothing on a slow connection) instead of KaTeX's `block`, which
- * reflowed every line holding inline math when a math font arrived late.
+ * declares the same faces with the book's loading rules (in the page's own
+ * head, preloaded where a chapter's first view draws them).
  * @returns {import('vite').Plugin}
  */
 function katexWithoutFontFaces() {

@@ -17,9 +17,16 @@
  *    after the cell parser loads;
  * e. cold-cache loads of every page (cold-load.mjs): JavaScript before any
  *    interaction, navigation to the first widget drawn, plain and under
- *    DevTools' Slow 4G with a 4× CPU slowdown, and cumulative layout shift.
+ *    DevTools' Slow 4G with a 4× CPU slowdown, and cumulative layout shift;
+ * f. first visits (first-visit.mjs): each load a fresh profile, by a link to
+ *    a chapter's simulator, with where the time goes up to its first draw.
+ * g. Lighthouse on every page, mobile and desktop presets (lighthouse.mjs):
+ *    its four scores, TBT, LCP, CLS and the DOM's size.
  *
- * BENCH_ONLY=cold runs part e alone; BENCH_LOADS sets the loads per page and
+ * BENCH_ONLY=cold runs part e alone, BENCH_ONLY=first part f alone,
+ * BENCH_ONLY=lighthouse part g alone (BENCH_LIGHTHOUSE_RUNS=N: the median of
+ * N runs per page and preset); BENCH_PAGES=/introduction/,/kepler/ limits
+ * parts e and f to those pages; BENCH_LOADS sets the loads per page and
  * profile (default 3; the median is reported).
  * Builds the site first when dist/ (or PHASEBOOK_OUT_DIR) has none.
  * BENCH_SECONDS sets the measuring window per scenario (default 4 s, after a
@@ -35,11 +42,14 @@ import { cellsReady, launchBrowser } from '../tests/e2e/browser.mjs';
 import { DIST, startServer } from '../tests/e2e/server.mjs';
 import { cell, typeIntoCell } from '../tests/e2e/fixture.mjs';
 import { coldLoad, median, CPU_SLOWDOWN } from './cold-load.mjs';
+import { firstVisits, printFirstVisits } from './first-visit.mjs';
+import { lighthouseTable } from './lighthouse.mjs';
 
 const ROOT = fileURLToPath(new URL('../', import.meta.url));
 const SECONDS = Number(process.env.BENCH_SECONDS ?? 4);
 const LOADS = Number(process.env.BENCH_LOADS ?? 3);
-const ONLY_COLD = process.env.BENCH_ONLY === 'cold';
+const ONLY = process.env.BENCH_ONLY ?? null;
+const ONLY_PAGES = process.env.BENCH_PAGES?.split(',').filter(Boolean) ?? null;
 const WARM_UP_MS = 2000;
 const FRAME_MS = 1000 / 60;
 
@@ -238,6 +248,9 @@ function sitePages() {
   }
   return pages;
 }
+
+/** The pages of parts e and f: every page, or those BENCH_PAGES names. */
+const measuredPages = () => sitePages().filter((path) => !ONLY_PAGES || ONLY_PAGES.includes(path));
 
 async function pageBytes(context, origin, path) {
   const page = await context.newPage();
@@ -452,9 +465,7 @@ async function firstSimulators(context, origin, paths) {
  * its top, as from the contents, and by a link to its first simulator
  * (`/kepler/#cell-stars`), the widget a reader opens a chapter for.
  */
-async function coldLoads(browser, server, print) {
-  const paths = sitePages();
-  const simulators = await firstSimulators(browser.context, server.origin, paths);
+async function coldLoads(browser, server, print, paths, simulators) {
   const profiles = [
     ['loopback', false],
     [`Slow 4G + ${CPU_SLOWDOWN}× CPU`, true],
@@ -536,8 +547,21 @@ async function main() {
     print(`Load average (1 min) ${loadBefore.toFixed(2)} before the run: ` +
       `other work on the machine shows up as missed frames, long tasks and slower loads.`);
     print();
-    if (!ONLY_COLD) await interactive(browser, server, print);
-    await coldLoads(browser, server, print);
+    if (!ONLY) await interactive(browser, server, print);
+    const paths = measuredPages();
+    const simulators = await firstSimulators(browser.context, server.origin, paths);
+    if (!ONLY || ONLY === 'cold') await coldLoads(browser, server, print, paths, simulators);
+    if (!ONLY || ONLY === 'lighthouse') {
+      print('g. Lighthouse, every page.');
+      print();
+      await lighthouseTable(server.origin, sitePages(), { print, log });
+    }
+    if (!ONLY || ONLY === 'first') {
+      // One browser at a time: the shared one is closed before the first visits start their own.
+      await browser.close();
+      const links = paths.filter((path) => simulators.get(path)).map((path) => `${server.origin}${path}#${simulators.get(path)}`);
+      printFirstVisits(await firstVisits(links, { loads: LOADS, log }), print, { loads: LOADS });
+    }
     print(`Run took ${((Date.now() - started) / 1000).toFixed(0)} s.`);
   } finally {
     await browser.close();

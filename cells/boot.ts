@@ -24,6 +24,7 @@ import { blockedMessage, cellOfSource, recentCell, stackOf } from './cell-errors
 import type { LiveCell } from './cell.ts';
 import { ChapterCells } from './chapter.ts';
 import { watchScrollables } from './scrollables.ts';
+import { colourCodeWhenNear } from './code-tokens.ts';
 import { MathSnapshot, pageIntact } from './integrity.ts';
 import { formatError } from './spec.ts';
 import { currentCellSignal, Notebook } from './runtime.ts';
@@ -34,14 +35,21 @@ import type { SharedView } from './share-ui.ts';
 import { CellView } from './cell-view.ts';
 import { loadFailure } from './load-failure.ts';
 import type { Sandbox } from './sandbox/index.ts';
+import { captionFigures } from './print-captions.ts';
+import { wireHandout } from './handout.ts';
 
 function markReady(): void {
   document.body.dataset.cellsReady = '';
   document.dispatchEvent(new CustomEvent('phasebook:cells-ready'));
 }
 
+/** Settles once every cell of the page has shown its first value or error (markComplete). */
+let allShown: () => void = () => {};
+const complete = new Promise<void>((resolve) => (allShown = resolve));
+
 function markComplete(): void {
   document.body.dataset.cellsComplete = '';
+  allShown();
 }
 
 /**
@@ -167,6 +175,7 @@ function pageSandbox(store: EditStore, cells: () => readonly LiveCell[]) {
 function boot(): void {
   const root = document.querySelector<HTMLElement>('[data-chapter]');
   if (!root) return;
+  colourCodeWhenNear(root);
   // An embed page (site/pages/embed/): its own store and its messages with the page around it (embed.ts).
   if (root.hasAttribute('data-embed-cell')) {
     void import('./embed.ts').then(
@@ -213,8 +222,16 @@ async function start(root: HTMLElement, shared: SharedView | null, store = share
   const { cells } = chapter;
   wireShareButton(chapter);
   if (shared) void loadShare().then((m) => m.showSharedBanner(shared, chapter));
-  // A page being printed shows every cell's output.
-  addEventListener('beforeprint', () => cells.forEach((cell) => scheduler.want(cell)));
+  // A page being printed starts every cell (those that have run print their output), and captions its figures.
+  const startAll = (): void => cells.forEach((cell) => scheduler.want(cell));
+  addEventListener('beforeprint', () => {
+    startAll();
+    captionFigures(root, location.href);
+  });
+  const handout = document.querySelector<HTMLElement>('[data-print-handout]');
+  const button = handout?.querySelector<HTMLButtonElement>('[data-print-button]');
+  const status = handout?.querySelector<HTMLElement>('[data-print-status]');
+  if (button && status) wireHandout(button, status, { startAll, complete });
   // Keystrokes typed just before the reader leaves are saved, not lost with the pending timer.
   addEventListener('pagehide', () => cells.forEach((cell) => cell.leaving()));
   document.addEventListener('visibilitychange', () => {

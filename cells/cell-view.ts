@@ -2,6 +2,7 @@
  * The DOM of one cell, as rendered by site/lib/remark-cells.mjs: reads what the
  * build put there and shows values, errors and notices. No runtime logic.
  */
+import { colourCode } from './code-tokens.ts';
 import { inspect } from './inspect.ts';
 import { markSoon as markScrollable } from './scrollables.ts';
 import type { CellSpec } from './spec.ts';
@@ -97,8 +98,12 @@ export class CellView {
   showStaticSource(source: string): void {
     const code = this.staticCode?.querySelector('code');
     if (!code || code.textContent === source) return;
-    if (source === this.originalSource && this.#originalCode) code.replaceWith(this.#originalCode.cloneNode(true));
-    else code.textContent = source;
+    if (source === this.originalSource && this.#originalCode) {
+      const original = this.#originalCode.cloneNode(true) as Element;
+      code.replaceWith(original);
+      // Code the build left plain until near the view is shown where the reader is working: coloured now.
+      colourCode(original);
+    } else code.textContent = source;
   }
 
   /**

@@ -1,10 +1,10 @@
 import type { BuildControl } from './build-control.ts';
 import { isCompiledModel, modelKey, type CompiledModel, type CompiledModelStore, type ModelKeySpec } from './compiled-model.ts';
 import { InputError } from '../errors.ts';
-import { applyMethod } from '../integrators/apply.ts';
+import type { MethodParts } from '../integrators/apply.ts';
 import { DEFAULT_METHOD, type MethodChoice } from '../integrators/methods.ts';
 import { stateNames } from '../expression/names.ts';
-import { modelFromCompiled } from './model-from-compiled.ts';
+import { compiledParts } from './compiled-parts.ts';
 import { gradientField, type OpaqueHamiltonian } from '../js-function/stencil.ts';
 import { rk38 } from '../integrators/rk38.ts';
 import { withSummary } from '../summary.ts';
@@ -64,7 +64,19 @@ export async function canonicalEquations(spec: HamiltonianSpec, options: BuildOp
   const hamiltonian = spec.hamiltonian!;
   const method = spec.method ?? DEFAULT_METHOD;
   const compiled = await compiledModelFor({ ...spec, hamiltonian, method }, options);
-  return modelFromCompiled(compiled, spec.params, hamiltonian, method);
+  const { model, parts } = compiledParts(compiled, spec.params, hamiltonian, method);
+  return runBy(model, method, parts);
+}
+
+/**
+ * `model`, built with RK 3/8's stepper, run by `method`. The other methods'
+ * code loads only for a model that asks for one: the book's models run RK
+ * 3/8, and a chapter whose first view builds one fetches that much less.
+ */
+async function runBy(model: Model, method: MethodChoice, parts: MethodParts = {}): Promise<Model> {
+  if (method.name === 'rk38') return model;
+  const { applyMethod } = await import('../integrators/apply.ts');
+  return applyMethod(model, method, parts);
 }
 
 /**
@@ -82,7 +94,7 @@ export async function compiledModelFor(spec: ModelKeySpec, options: BuildOptions
   return compiled;
 }
 
-function fieldModel(spec: HamiltonianSpec, names: string[], route: Route, field: VectorField, source: string): Model {
+function fieldModel(spec: HamiltonianSpec, names: string[], route: Route, field: VectorField, source: string): Promise<Model> {
   const dim = 2 * spec.dof;
   const params = spec.params ?? {};
   const h = spec.hamiltonian;
@@ -99,7 +111,7 @@ function fieldModel(spec: HamiltonianSpec, names: string[], route: Route, field:
     field,
     hamiltonian: typeof h === 'function' ? opaqueAsHamiltonian(h, dim) : undefined,
   });
-  return applyMethod(model, spec.method ?? DEFAULT_METHOD);
+  return runBy(model, spec.method ?? DEFAULT_METHOD);
 }
 
 function opaqueAsHamiltonian(h: OpaqueHamiltonian, dim: number): HamiltonianFunction {

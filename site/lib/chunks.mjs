@@ -56,7 +56,9 @@ const GROUPS = [
   [/^widgets\/chapter\/analysis\/kepler-run\.ts/, 'poincare-section'],
   [/^core\/analysis\/|^widgets\/chapter\/analysis\//, 'analysis'],
   [/^core\/(expression\/(?!names|mathjs-instance)|model\/compile-model|js-function\/translate)/, 'compiler'],
-  [/^core\/(integrators\/|js-function\/|expression\/names|model\/(canonical-equations|compiled-model|model-from-compiled))/, 'model'],
+  // The integration methods besides RK 3/8, and how a model is switched to one: loaded only by a model that asks for one.
+  [/^core\/integrators\/(apply|dormand-prince|dormand-prince-step|continuations|midpoint|linear-solve)\.ts$|^core\/model\/model-from-compiled\.ts$/, 'methods'],
+  [/^core\/(integrators\/|js-function\/|expression\/names|model\/(canonical-equations|compiled-model|compiled-parts))/, 'model'],
   // The guards reader code runs under: loaded only when an edit first runs (cells/sandbox/index.ts).
   [/^cells\/sandbox\//, 'sandbox'],
   // What the page says when storage or the page itself was damaged.

@@ -1,23 +1,40 @@
 /**
  * The book's fonts — its text faces and KaTeX's — declared here rather than
- * by fontsource's and KaTeX's stylesheets, so that loading them never moves
- * the page and never delays a widget.
+ * by fontsource's and KaTeX's stylesheets, so that loading them never delays
+ * a widget, text never reflows, and math is never drawn in the wrong face.
  *
- * - `font-display: optional`: a font that is not there by the first layout
- *   (about 100 ms) is not swapped in later for this page view, so text and
- *   math never reflow under the reader; it is cached for the next page.
- *   fontsource's `swap` and KaTeX's `block` moved every line of a chapter
- *   when a font arrived.
- * - The faces of the first view are preloaded: the latin subsets of the
- *   serif and the sans, and on chapters those of the code font and KaTeX's
- *   two most used faces. The rest load when a page uses them
- *   (unicode-range, KaTeX's own classes).
- * - On a slow connection (the browser's estimate is 3G or slower, or the
- *   reader asked to save data) no font is declared at all: the page reads in
- *   the system's fonts, and the bandwidth goes to the text and the widgets,
- *   where a font that would arrive too late to be used would have taken it.
- *   This is decided by a few lines in the head, before the first paint
- *   (fontLoader); without JavaScript the fonts are declared in <noscript>.
+ * Text and math are loaded by different rules, because a late font costs
+ * them different things:
+ *
+ * - Text faces are `font-display: optional`: a face that is not there by the
+ *   first layout (about 100 ms) is not swapped in later for this page view,
+ *   so prose never reflows under the reader; it is cached for the next page.
+ *   fontsource's `swap` moved every line of a chapter when a font arrived.
+ *   On a slow connection (the browser's estimate is 3G or slower, or the
+ *   reader asked to save data) no text face is declared at all: the prose
+ *   reads in the system's fonts, and the bandwidth goes to the text, the
+ *   math and the widgets. This is decided by a few lines in the head, before
+ *   the first paint (fontLoader); without JavaScript the faces are declared
+ *   in <noscript>.
+ * - KaTeX's faces are `font-display: block`, always declared, on every
+ *   connection. KaTeX measures its layout in its own fonts' metrics: in a
+ *   system serif a formula is merely ugly, but a stretchy delimiter is built
+ *   from KaTeX_Size1–4 glyphs, and without them a matrix such as the
+ *   introduction's J = (0 I; −I 0) keeps small, unstretched parentheses.
+ *   `optional` let that happen on every fresh visit over Slow 4G (the face
+ *   missed its 100 ms), and the slow-connection rule declared no math face
+ *   at all. So math waits for its faces, for at most the browser's block
+ *   period (3 s), and swaps them in whenever they come after that.
+ * - The faces of the first view are preloaded. For every page, the latin
+ *   subsets of the serif and the sans (by the script, not on a slow
+ *   connection); for a chapter, the code font's (likewise), and by <link>
+ *   in the page's head, on every connection, the two math faces every
+ *   chapter's first view draws, KaTeX_Main and KaTeX_Math italic (42 KB).
+ *   KaTeX_Size3, which the introduction's matrix is built from, is under
+ *   Vite's inlining limit and comes as data in the rule itself. The other
+ *   faces (Size1, 2 and 4, bold, AMS…) load when a formula uses them:
+ *   preloaded on a page that does not draw them, they would take bandwidth
+ *   from the first view, and Chromium warns of a preload left unused.
  *
  * KaTeX's @font-face rules are taken out of its stylesheet by the build
  * (astro.config.mjs) and declared here instead, with the same families.
@@ -84,23 +101,37 @@ export function katexFace(path: string, url: string): Face {
 
 const KATEX_FACES = Object.entries(KATEX_FILES).map(([path, url]) => katexFace(path, url));
 if (KATEX_FACES.length < 20) throw new Error(`found ${KATEX_FACES.length} KaTeX fonts, expected 20: has katex moved its fonts?`);
-const katexUrl = (name: string) => KATEX_FACES.find((f) => f.url.includes(`/${name}.`))?.url ?? '';
+/** The URL of one KaTeX font file by its name (`KaTeX_Main-Regular`): a file of the site, or a data: URL for one small enough to inline. */
+function katexUrl(name: string): string {
+  const entry = Object.entries(KATEX_FILES).find(([path]) => path.endsWith(`/${name}.woff2`));
+  if (!entry) throw new Error(`no KaTeX font ${name}`);
+  return entry[1];
+}
 
-function faceRule(f: Face): string {
-  return `@font-face{font-family:'${f.family}';font-style:${f.style};font-weight:${f.weight};font-display:optional;` +
+function faceRule(f: Face, display: 'optional' | 'block'): string {
+  return `@font-face{font-family:'${f.family}';font-style:${f.style};font-weight:${f.weight};font-display:${display};` +
     `src:url(${f.url}) format('${f.variable ? 'woff2-variations' : 'woff2'}')${f.range ? `;unicode-range:${f.range}` : ''}}`;
 }
 
-/** Every @font-face rule of the book. */
-export const fontFaceCss = [...TEXT_FACES, ...KATEX_FACES].map(faceRule).join('\n');
+/** The text faces' @font-face rules: declared by fontLoader, or in <noscript>. */
+export const textFaceCss = TEXT_FACES.map((f) => faceRule(f, 'optional')).join('\n');
 
-/** Fonts the first view of every page uses: the body text and the headings. */
-const TEXT_PRELOADS = [serifLatin, sansLatin];
-/** What a chapter's first view adds: its code and its math. */
-const CHAPTER_PRELOADS = [monoLatin, katexUrl('KaTeX_Main-Regular'), katexUrl('KaTeX_Math-Italic')];
+/** KaTeX's @font-face rules, in every page's head as they are: math never falls back (see the module comment). */
+export const mathFaceCss = KATEX_FACES.map((f) => faceRule(f, 'block')).join('\n');
 
 /**
- * The inline script that declares the fonts and preloads the first view's,
+ * The math faces a chapter's first view draws, preloaded by <link> in its head on every connection: the
+ * letters, digits and operators (Main) and the variables (Math italic).
+ */
+export const mathPreloads: readonly string[] = [katexUrl('KaTeX_Main-Regular'), katexUrl('KaTeX_Math-Italic')];
+
+/** Text fonts the first view of every page uses: the body text and the headings. */
+const TEXT_PRELOADS = [serifLatin, sansLatin];
+/** What a chapter's first view adds: its code. */
+const CHAPTER_PRELOADS = [monoLatin];
+
+/**
+ * The inline script that declares the text faces and preloads the first view's,
  * unless the connection is slow (see the module comment).
  */
 export function fontLoader(chapter: boolean): string {
@@ -114,7 +145,7 @@ export function fontLoader(chapter: boolean): string {
     document.head.append(link);
   }
   const style = document.createElement('style');
-  style.textContent = ${JSON.stringify(fontFaceCss)};
+  style.textContent = ${JSON.stringify(textFaceCss)};
   document.head.append(style);
 })();`;
 }

@@ -9,7 +9,7 @@
  *
  * Emitted markup (the contract the client and the e2e tests rely on):
  *
- *   <figure class="cell" id="cell-<id>" data-cell="<id>" data-cell-name="<name>"
+ *   <figure class="cell" id="cell-<id>" data-cell="<id>" data-cell-name="<name>" [data-print-code]
  *           data-cell-hash="<sha256 of the source, 12 hex>" data-cell-spec="<CellSpec JSON>">
  *     <div class="cell-box">
  *       <div class="cell-editor"><pre class="cell-code"><code>…highlighted source…</code></pre></div>
@@ -29,7 +29,7 @@ import { createHash } from 'node:crypto';
 import { parseCell } from '@observablehq/parser';
 import { fromHtmlIsomorphic } from 'hast-util-from-html-isomorphic';
 import { describeCell, formatError } from '../../cells/index.ts';
-import { highlightJs } from './highlight-js.mjs';
+import { highlightJs, tokenRuns } from './highlight-js.mjs';
 import { precompileChapter } from './precompile.ts';
 import { PAGE_DATA_ATTRIBUTE, WIDGET_NAMES } from '../../widgets/index.ts';
 
@@ -38,6 +38,18 @@ const PAGE_DATA_PROPERTY = PAGE_DATA_ATTRIBUTE.replace(/-(\w)/g, (_, c) => c.toU
 
 /** The `language-*` class of cell code, which Shiki must leave alone. */
 export const CELL_CODE_LANGUAGE = 'js-cell';
+
+/**
+ * The longest named cell whose code a printout shows (site/styles/print.css): a definition of the lesson's
+ * inputs (H, parameters, the initial state) is a few lines; longer code computes something the printout shows.
+ */
+export const PRINTED_CODE_LINES = 8;
+
+/**
+ * The blocks of a chapter that are always laid out (the first sixteen, site/styles/global.css): a cell
+ * among them has its code coloured in the HTML; a later one is coloured by the page as it comes near.
+ */
+const FIRST_VIEW_BLOCKS = 16;
 
 /** @param {import('mdast').Code} node */
 function isCellFence(node) {
@@ -87,15 +99,18 @@ export function lineCount(source) {
  * @param {string} id
  * @param {ReturnType<typeof analyzeCell>} analysis
  * @param {string} [output] HTML of the cell's value when the build could compute it (a typeset formula)
+ * @param {{ colourLater?: boolean }} [options] `colourLater`: plain code with its runs as data (cells/code-tokens.ts),
+ *   for a cell far from the chapter's first view
  * @returns {import('hast').Element}
  */
-export function renderCell(source, id, analysis, output) {
+export function renderCell(source, id, analysis, output, { colourLater = false } = {}) {
   const name = 'spec' in analysis ? analysis.spec.name : null;
   const label = name ? `Code cell ${name}` : 'Code cell';
   /** @type {import('hast').Properties} */
   // The element id makes a cell linkable (`/kepler/#cell-stars`); the prefix keeps it apart from headings' ids.
   const properties = { className: ['cell'], id: `cell-${id}`, dataCell: id, dataCellHash: hashSource(source) };
   if (name) properties.dataCellName = name;
+  if (name && lineCount(source) <= PRINTED_CODE_LINES) properties.dataPrintCode = '';
   if ('spec' in analysis) properties.dataCellSpec = JSON.stringify(analysis.spec);
   else properties.dataCellBuildError = analysis.error;
 
@@ -104,7 +119,9 @@ export function renderCell(source, id, analysis, output) {
       h('div', { className: ['cell-editor'] }, [
         // Its number of lines keeps its place while it is not laid out (global.css).
         h('pre', { className: ['cell-code'], tabIndex: 0, ariaLabel: label, style: `--lines: ${lineCount(source)}` }, [
-          h('code', { className: [`language-${CELL_CODE_LANGUAGE}`] }, highlightJs(source)),
+          colourLater
+            ? h('code', { className: [`language-${CELL_CODE_LANGUAGE}`], dataTokens: tokenRuns(source) }, [text(source)])
+            : h('code', { className: [`language-${CELL_CODE_LANGUAGE}`] }, highlightJs(source)),
         ]),
       ]),
       h('div', { className: ['cell-toolbar'] }, [
@@ -169,7 +186,8 @@ export function remarkCells() {
     );
     found.forEach(({ parent, index, source, analysis }, i) => {
       if ('error' in analysis) file.message(`cell ${ids[i]}: ${analysis.error}`, parent.children[index]);
-      const cell = renderCell(source, ids[i], analysis, work.outputs.get(ids[i]));
+      const colourLater = parent !== tree || index >= FIRST_VIEW_BLOCKS;
+      const cell = renderCell(source, ids[i], analysis, work.outputs.get(ids[i]), { colourLater });
       // An unknown mdast node with hName/hProperties/hChildren becomes exactly this element.
       parent.children[index] = /** @type {import('mdast').RootContent} */ (/** @type {unknown} */ ({
         type: 'liveCell',

@@ -31,12 +31,9 @@ export async function openSite(options) {
  * cell has run (see cellsReady).
  * @param {{ origin: string, context: import('playwright-core').BrowserContext }} site
  * @param {string} path e.g. '/introduction/'
- * @param {{ clock?: boolean }} [options] `clock`: install a clock the test can stop (page.clock)
  */
-export async function openChapter(site, path, { clock = false } = {}) {
+export async function openChapter(site, path) {
   const page = await site.context.newPage();
-  // A clock the test can stop and move on by hand (page.clock); it runs in real time until then.
-  if (clock) await page.clock.install();
   // Clear saved edits from the contents page, which runs no cells: reloading a chapter instead
   // would abort the requests its widgets had in flight, and those would count as problems.
   await page.goto(site.origin + '/');

@@ -10,6 +10,7 @@ import { join } from 'node:path';
 import { after, before, test } from 'node:test';
 import { gzipSync } from 'node:zlib';
 import { cell, cellsReady, openSite, typeIntoCell, waitForOutput, watchPage } from './fixture.mjs';
+import { pages } from './every-page.mjs';
 import { DIST } from './server.mjs';
 
 /** @type {Awaited<ReturnType<typeof openSite>>} */
@@ -153,4 +154,58 @@ test('a link to a simulator fetches the simulator and its views, and no other wi
   assert.deepEqual(chunks.filter((name) => unwanted.includes(name)), []);
   assert.deepEqual(problems, []);
   await page.close();
+});
+
+/**
+ * The decided budgets of JavaScript a reader's first view costs (gzip, level 9, as bench/cold-load.mjs counts):
+ * a chapter opened at its top, and opened by a link to its first simulator, the widget a reader comes for.
+ * Counted once the first view has run and the network has gone quiet, before any interaction.
+ */
+const TOP_BUDGET = 29 * 1024;
+const SIMULATOR_LINK_BUDGET = 80 * 1024;
+
+/** The chapters with cells, each with the id of the cell holding its first simulator (null for none), from the built HTML. */
+function chaptersWithCells() {
+  return pages()
+    .map((path) => ({ path, html: readFileSync(join(DIST, path, 'index.html'), 'utf8') }))
+    .filter(({ html }) => html.includes('data-cell-spec'))
+    .map(({ path, html }) => {
+      const reserve = html.indexOf('data-reserve="simulator"');
+      const cellIds = reserve < 0 ? [] : [...html.slice(0, reserve).matchAll(/<figure class="cell" id="([^"]+)"/g)];
+      return { path, simulator: cellIds.at(-1)?.[1] ?? null };
+    });
+}
+
+/** The gzip bytes of the scripts `url` loads before any interaction; `simulator`: the cell id whose simulator must have drawn. */
+async function firstViewScripts(url, simulator) {
+  const page = await site.context.newPage();
+  const { problems, requests } = watchPage(page);
+  await page.goto(url);
+  await page.waitForSelector('body[data-cells-ready]', { state: 'attached', timeout: 30_000 });
+  if (simulator) await page.locator(`#${simulator} [data-widget="simulator"][data-ready]`).waitFor({ timeout: 30_000 });
+  await page.waitForLoadState('networkidle');
+  const loaded = scripts(requests);
+  // Read before closing: closing aborts what is still in flight, which is no problem of the page's.
+  const seen = [...problems];
+  await page.close();
+  return { bytes: gzipBytes(loaded), names: loaded.map(chunkOf), problems: seen };
+}
+
+test('every chapter stays within the JavaScript budgets: its top ≤ 29 KB, a link to its first simulator ≤ 80 KB (gzip)', async (t) => {
+  const chapters = chaptersWithCells();
+  assert.ok(chapters.length >= 10, `chapters with cells: ${chapters.map((c) => c.path).join(', ')}`);
+  assert.ok(chapters.filter((c) => c.simulator).length >= 8, 'most chapters have a simulator');
+  const over = [];
+  for (const { path, simulator } of chapters) {
+    const top = await firstViewScripts(site.origin + path);
+    assert.deepEqual(top.problems, [], path);
+    t.diagnostic(`${path} top: ${(top.bytes / 1024).toFixed(1)} KB (${top.names.join(', ')})`);
+    if (top.bytes > TOP_BUDGET) over.push(`${path} top ${(top.bytes / 1024).toFixed(1)} KB`);
+    if (!simulator) continue;
+    const link = await firstViewScripts(`${site.origin}${path}#${simulator}`, simulator);
+    assert.deepEqual(link.problems, [], `${path}#${simulator}`);
+    t.diagnostic(`${path}#${simulator}: ${(link.bytes / 1024).toFixed(1)} KB (${link.names.join(', ')})`);
+    if (link.bytes > SIMULATOR_LINK_BUDGET) over.push(`${path}#${simulator} ${(link.bytes / 1024).toFixed(1)} KB`);
+  }
+  assert.deepEqual(over, []);
 });

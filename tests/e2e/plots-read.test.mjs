@@ -167,8 +167,13 @@ test('the batch readout says the drift, then which trajectory: the count never r
 
 const AXE = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
 
-test('every plot has a text alternative with its ranges and current values, rewritten a few times a second, not each frame', async () => {
-  const { page, problems } = await openChapter(site, '/introduction/', { clock: true });
+test('every plot has a text alternative with its ranges and current values, rewritten a few times a second, not each frame', async (t) => {
+  // A browser of its own, with a clock the test can stop and move on by hand: a clock is the whole
+  // context's (page.clock is context.clock), and stopped it would stop every later test's pages.
+  const own = await openSite();
+  t.after(() => own.close());
+  await own.context.clock.install();
+  const { page, problems } = await openChapter(own, '/introduction/');
   const sim = '[data-cell="sim"] [data-widget="simulator"]';
   await page.locator(sim).scrollIntoViewIfNeeded();
   // The spectrum names its strongest peak once its window holds enough of the motion: soon on a quiet machine,

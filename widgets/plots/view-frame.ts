@@ -43,6 +43,8 @@ export class ViewFrame {
   private readonly layers: Layer[] = [];
   private readonly cleanups: (() => void)[] = [];
   private note: HTMLDivElement | null = null;
+  /** whether the stage may have changed width since it was last read */
+  private widthStale = true;
 
   constructor(private readonly options: FrameOptions) {
     const element = document.createElement('div');
@@ -102,8 +104,14 @@ export class ViewFrame {
    */
   measure(force = false): boolean {
     const dpr = Math.min(4, pixelRatio());
-    const measured = this.canvas.clientWidth;
-    const width = Math.max(160, Math.round(measured > 0 ? measured : this.width || FALLBACK_WIDTH));
+    // Reading the width forces a layout when the page changed since the last one, as a frame's readouts do;
+    // so it is read only when the stage was resized (or there is no ResizeObserver to say so), not each frame.
+    let width = this.width;
+    if (force || this.widthStale) {
+      const measured = this.canvas.clientWidth;
+      width = Math.max(160, Math.round(measured > 0 ? measured : this.width || FALLBACK_WIDTH));
+      this.widthStale = typeof ResizeObserver !== 'function' || measured <= 0;
+    }
     if (!force && width === this.width && dpr === this.dpr) return false;
     this.width = width;
     this.dpr = dpr;
@@ -179,6 +187,7 @@ export class ViewFrame {
   }
 
   private changed(): void {
+    this.widthStale = true;
     const theme = readTheme(this.element);
     const themeChanged = !sameTheme(theme, this.theme);
     this.theme = theme;

@@ -2,6 +2,7 @@ import { MAX_SPEED, outside, type Simulation } from '../../core/index.ts';
 import { carryOver, DEFAULT_BUDGET, integrateFrame, owedSteps, type Budget } from './frame-budget.ts';
 import type { View } from '../plots/view.ts';
 import { PaceMeter } from './pace.ts';
+import { printSteps } from './print-frame.ts';
 import type { WorkerIntegrator } from './worker-integrator.ts';
 
 /** Measurements of the last frames, for readouts and tests. */
@@ -87,6 +88,7 @@ export class Driver {
   private readonly budget: Budget;
   private readonly listeners = new Map<keyof DriverEvents, Set<(value: never) => void>>();
   private readonly onVisibility = (): void => this.visibilityChanged();
+  private readonly onPrint = (): void => this.printFrame();
   /** False while the element is scrolled out of view (see the class comment). */
   private inView = true;
   private readonly viewObserver: IntersectionObserver | null;
@@ -107,6 +109,8 @@ export class Driver {
     this.budget = options.budget ?? DEFAULT_BUDGET;
     views.forEach((v) => v.setPlaying?.(false));
     document.addEventListener('visibilitychange', this.onVisibility);
+    // A Node test or a worker has no window to print.
+    globalThis.addEventListener?.('beforeprint', this.onPrint);
     const element = options.element;
     this.viewObserver =
       element && typeof IntersectionObserver !== 'undefined'
@@ -203,10 +207,24 @@ export class Driver {
     if (this.raf) cancelAnimationFrame(this.raf);
     this.offload?.dispose();
     document.removeEventListener('visibilitychange', this.onVisibility);
+    globalThis.removeEventListener?.('beforeprint', this.onPrint);
     this.viewObserver?.disconnect();
     this.views.forEach((v) => v.dispose());
     this.emit('dispose', undefined);
     this.listeners.clear();
+  }
+
+  /**
+   * Draws, now, a frame worth printing (print-frame.ts): the page prints right after `beforeprint`, with no
+   * animation frame between. Integrates on the page up to the printed span unless the worker holds the state,
+   * which has then been running and is drawn as it is.
+   */
+  printFrame(): void {
+    if (this.disposed) return;
+    const sim = this.simulation;
+    if (!this.offload?.live && !sim.error) sim.run(printSteps(sim));
+    this.drawNow();
+    if (sim.error) this.pause();
   }
 
   private afterReset(): void {

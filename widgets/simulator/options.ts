@@ -1,5 +1,5 @@
 import {
-  applyMethod, canonicalEquations, capacityFor, DEFAULT_METHOD, firstEvaluation, InputError, MAX_BATCH, MAX_DOF, MAX_DT, MAX_SPEED, methodChoice, MIN_DT, outside,
+  canonicalEquations, capacityFor, DEFAULT_METHOD, firstEvaluation, InputError, MAX_BATCH, MAX_DOF, MAX_DT, MAX_SPEED, methodChoice, MIN_DT, outside,
   Simulation, type BuildOptions, type DerivedSeries, type HamiltonianSpec, type MethodChoice, type Model,
 } from '../../core/index.ts';
 import type { PhasePortraitOptions } from '../plots/plane/phase-portrait.ts';
@@ -127,7 +127,7 @@ export async function parseSimulatorOptions(
   const views = viewNames(options.views);
   onViews?.(views, viewOptions);
 
-  const model = options.model != null ? givenModel(options) : await builtModel(options, build);
+  const model = options.model != null ? await givenModel(options) : await builtModel(options, build);
   const { values: initial, count } = flattenInitial(options.initial, model.dim);
   if (count > MAX_BATCH) throw fail(`a batch of ${count} trajectories is more than the book runs at once, ${MAX_BATCH}`);
   if (model.dof > MAX_DOF) throw fail(`${model.dof} degrees of freedom are more than the book allows, ${MAX_DOF}`);
@@ -249,7 +249,7 @@ async function builtModel(options: SimulatorOptions, build: BuildOptions): Promi
  * that would build a model are refused rather than dropped: the reader
  * would otherwise run another model than the one they wrote.
  */
-function givenModel(options: SimulatorOptions): Model {
+async function givenModel(options: SimulatorOptions): Promise<Model> {
   const model: unknown = options.model;
   if (!isModel(model)) {
     const what = typeof (model as { then?: unknown })?.then === 'function'
@@ -271,14 +271,16 @@ function givenModel(options: SimulatorOptions): Model {
  * so they apply to any model (the midpoint rule's Newton Jacobian then by
  * central differences, as its accuracy note says). RK 3/8 and the
  * splittings run code generated with the model, so a model built for
- * another method is refused with where to ask for them.
+ * another method is refused with where to ask for them. The methods' code
+ * loads only then: a simulator of the book's models runs them by RK 3/8.
  */
-function modelRunBy(model: Model, options: SimulatorOptions): Model {
+async function modelRunBy(model: Model, options: SimulatorOptions): Promise<Model> {
   const { method, rtol, atol } = options;
   if (method === undefined && rtol === undefined && atol === undefined) return model;
   const own = model.method ?? DEFAULT_METHOD;
   const choice = method === undefined ? checkedMethod(own.name, rtol ?? own.rtol, atol ?? own.atol) : checkedMethod(method, rtol, atol);
   if (choice.name === own.name && choice.rtol === own.rtol && choice.atol === own.atol) return model;
+  const { applyMethod } = await import('../../core/integrators/apply.ts');
   if (choice.name === 'midpoint' || choice.name === 'adaptive') return applyMethod(model, choice);
   try {
     // A splitting says first when H cannot be split at all, for which no rebuilding helps.

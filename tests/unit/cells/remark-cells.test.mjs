@@ -1,5 +1,5 @@
 import { describe, expect, test } from 'vitest';
-import { assignCellIds, hashSource, remarkCells } from '../../../site/lib/remark-cells.mjs';
+import { assignCellIds, hashSource, PRINTED_CODE_LINES, remarkCells } from '../../../site/lib/remark-cells.mjs';
 
 /** Runs the plugin on a hand-made tree of fenced code blocks. */
 async function transform(fences) {
@@ -79,6 +79,17 @@ describe('remarkCells()', () => {
   });
 });
 
+describe('remarkCells(): which code prints (site/styles/print.css)', () => {
+  test('a short named cell, a definition of the lesson, is marked to print its code; a long or unnamed one is not', async () => {
+    const long = `driveLine = {\n${'  x;\n'.repeat(PRINTED_CODE_LINES)}}`;
+    const { tree } = await transform([['cell', 'H = "p^2/2 + q^2/2"'], ['cell', 'equations(model)'], ['cell', long]]);
+    const [short, unnamed, longer] = tree.children.map((node) => node.data.hProperties);
+    expect(short.dataPrintCode).toBe('');
+    expect(unnamed.dataPrintCode).toBeUndefined();
+    expect(longer.dataPrintCode).toBeUndefined();
+  });
+});
+
 describe('remarkCells() at build time', () => {
   test('compiles the models the cells define and puts the typeset equations into the cell that shows them', async () => {
     const { tree } = await transform([
@@ -124,5 +135,32 @@ describe('highlightJs(source)', () => {
     expect(returnNode.properties.className).toEqual(['tok-keyword']);
     const text = nodes.map((node) => (node.type === 'text' ? node.value : node.children[0].value)).join('');
     expect(text).toBe('x = {\n  return 1;\n}');
+  });
+});
+
+describe('tokenRuns(source), read back by the page (cells/code-tokens.ts readRuns)', () => {
+  const source = 'x = {\n  const s = "a\\u00e9 ∂H/∂p — 𝛼";\n  return s.length + 1; // why\n}';
+
+  test('cut the source into the same tokens, with the same classes, as the spans of the first view', async () => {
+    const { highlightJs, tokenRuns } = await import('../../../site/lib/highlight-js.mjs');
+    const { readRuns } = await import('../../../cells/code-tokens.ts');
+    const spans = highlightJs(source)
+      .filter((node) => node.type === 'element')
+      .map((node) => ({ text: node.children[0].value, classes: node.properties.className.join(' ') }));
+    const pieces = readRuns(tokenRuns(source), source);
+    expect(pieces.map((p) => p.text).join('')).toBe(source);
+    expect(pieces.filter((p) => p.classes)).toEqual(spans);
+    expect(spans.map((s) => s.classes)).toContain('tok-keyword');
+    // Lengths are counted in UTF-16 units on both sides: 𝛼 is two of them.
+    expect(spans.filter((s) => s.classes === 'tok-string').map((s) => s.text)).toEqual(['"a', ' ∂H/∂p — 𝛼"']);
+  });
+
+  test('runs that do not add up to the text leave the code plain', async () => {
+    const { tokenRuns } = await import('../../../site/lib/highlight-js.mjs');
+    const { readRuns } = await import('../../../cells/code-tokens.ts');
+    const runs = tokenRuns(source);
+    expect(readRuns(runs, `${source} `)).toBeNull();
+    expect(readRuns(runs, source.slice(1))).toBeNull();
+    expect(readRuns('3.tok-keyword x', 'abcdef')).toBeNull();
   });
 });

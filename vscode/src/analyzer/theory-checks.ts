@@ -14,10 +14,38 @@ export interface CheckCell {
 
 const LABEL = /\blabel\s*:\s*(['"`])((?:\\.|(?!\1).)*)\1/;
 
+/**
+ * A label written as a template literal, as the Test Explorer shows it. Its
+ * substitutions are known only when the cell runs (a cell that makes a
+ * check per method labels each `Order of ${method}`), so each is shown as
+ * "…" and the label keeps its static parts: "Order of …". Each check's
+ * own label, with its values, is in the test's output after a run.
+ */
+export function staticLabel(template: string): string {
+  let text = '';
+  for (let i = 0; i < template.length; i++) {
+    if (template[i] === '\\') {
+      text += template.slice(i, i + 2);
+      i++;
+    } else if (template.startsWith('${', i)) {
+      let depth = 0;
+      for (; i < template.length; i++) {
+        if (template[i] === '{') depth++;
+        else if (template[i] === '}' && --depth === 0) break;
+      }
+      text += '…';
+    } else {
+      text += template[i];
+    }
+  }
+  return text;
+}
+
 export function checkCells(cells: readonly ChapterCell[]): CheckCell[] {
   return cells.flatMap((cell) => {
     if (!cell.spec?.inputs.includes('theoryCheck')) return [];
-    const label = LABEL.exec(cell.source)?.[2] ?? cell.name ?? `cell ${cell.index + 1}`;
+    const written = LABEL.exec(cell.source);
+    const label = written ? (written[1] === '`' ? staticLabel(written[2]) : written[2]) : (cell.name ?? `cell ${cell.index + 1}`);
     return [{ cell, label }];
   });
 }
@@ -25,7 +53,8 @@ export function checkCells(cells: readonly ChapterCell[]): CheckCell[] {
 /**
  * A test's outcome: `skipped` when the formula's regime does not hold (the
  * check then judges nothing, as the book says), `errored` when the cell
- * failed or a check could give no verdict.
+ * failed or a check could give no verdict, `failed` when the check
+ * disagrees or had no verdict within its time limit.
  */
 export interface Verdict {
   readonly outcome: 'passed' | 'failed' | 'skipped' | 'errored';
@@ -61,7 +90,8 @@ export function describeReading(reading: TheoryCheckReading): string {
 
 export function verdictOf(result: CheckResult, timeoutMs: number): Verdict {
   if (result.state === 'missing') return { outcome: 'errored', message: `The preview has no cell ${result.id}.` };
-  if (result.state === 'timeout') return { outcome: 'errored', message: `The cell had not finished after ${Math.round(timeoutMs / 1000)} s.` };
+  // A check with no verdict in time is a failed test: a run of every test must end, and say which did not.
+  if (result.state === 'timeout') return { outcome: 'failed', message: `The check had no verdict after ${Math.round(timeoutMs / 1000)} s, its time limit: its cell had not finished.` };
   if (result.state === 'rejected') return { outcome: 'errored', message: result.error ?? 'The cell failed.' };
   if (result.checks.length === 0) return { outcome: 'errored', message: 'The cell ran, but its value holds no theory check.' };
   const message = result.checks.map(describeReading).join('\n');

@@ -1,6 +1,7 @@
 /**
  * Every chapter of the workspace, analysed, with its diagnostics published:
- * chapters found on disk at start-up (and as files come and go), an open
+ * chapters read from each workspace folder's content/ at start-up (and as
+ * files and folders come and go), an open
  * chapter from its editor's text as the author types (debounced), and any
  * other open MDX file (the template, a draft) on its own. Duplicate orders
  * are checked across the chapters of each book.
@@ -10,7 +11,7 @@ import { analyzeChapter, type ChapterAnalysis } from '../analyzer/analyze.ts';
 import { duplicateOrders, type ChapterOrder } from '../analyzer/orders.ts';
 import type { Problem } from '../analyzer/problems.ts';
 import { builtins } from './catalogue-data.ts';
-import { bookOf, CHAPTER_GLOB, EXCLUDE_GLOB, isMdx } from './chapter-files.ts';
+import { bookOf, CHAPTERS_IN_FOLDER, contentOf, isMdx, mdxFilesUnder } from './chapter-files.ts';
 import { toDiagnostic } from './problem-diagnostics.ts';
 
 /** How long typing must pause before a chapter is analysed again. */
@@ -46,6 +47,8 @@ export class ChapterIndex implements vscode.Disposable {
   readonly #timers = new Map<string, ReturnType<typeof setTimeout>>();
   readonly #changed = new vscode.EventEmitter<vscode.Uri>();
   readonly #disposables: vscode.Disposable[] = [];
+  /** A watcher on each workspace folder's chapters, by the folder's URI. */
+  readonly #watchers = new Map<string, vscode.FileSystemWatcher>();
   /** Resolves once the workspace's chapters have been read for the first time. */
   readonly ready: Promise<void>;
 
@@ -54,13 +57,9 @@ export class ChapterIndex implements vscode.Disposable {
 
   constructor(collection: vscode.DiagnosticCollection) {
     this.#collection = collection;
-    const watcher = vscode.workspace.createFileSystemWatcher(CHAPTER_GLOB);
     this.#disposables.push(
-      watcher,
       this.#changed,
-      watcher.onDidCreate((uri) => void this.#readFromDisk(uri)),
-      watcher.onDidChange((uri) => void this.#readFromDisk(uri)),
-      watcher.onDidDelete((uri) => this.#remove(uri)),
+      vscode.workspace.onDidChangeWorkspaceFolders((event) => void this.#foldersChanged(event)),
       vscode.workspace.onDidOpenTextDocument((document) => this.#fromDocument(document)),
       vscode.workspace.onDidChangeTextDocument((event) => this.#typed(event.document)),
       vscode.workspace.onDidCloseTextDocument((document) => this.#closed(document)),
@@ -87,13 +86,38 @@ export class ChapterIndex implements vscode.Disposable {
 
   dispose(): void {
     for (const timer of this.#timers.values()) clearTimeout(timer);
+    for (const watcher of this.#watchers.values()) watcher.dispose();
     for (const disposable of this.#disposables) disposable.dispose();
   }
 
   async #scan(): Promise<void> {
     for (const document of vscode.workspace.textDocuments) this.#fromDocument(document, false);
-    const uris = await vscode.workspace.findFiles(CHAPTER_GLOB, EXCLUDE_GLOB);
+    await Promise.all((vscode.workspace.workspaceFolders ?? []).map((folder) => this.#readFolder(folder)));
+    this.#publish();
+  }
+
+  /** Reads a workspace folder's chapters (its content/, by the file system: no file search) and watches them. */
+  async #readFolder(folder: vscode.WorkspaceFolder): Promise<void> {
+    const key = folder.uri.toString();
+    if (!this.#watchers.has(key)) {
+      const watcher = vscode.workspace.createFileSystemWatcher(new vscode.RelativePattern(folder, CHAPTERS_IN_FOLDER));
+      watcher.onDidCreate((uri) => void this.#readFromDisk(uri));
+      watcher.onDidChange((uri) => void this.#readFromDisk(uri));
+      watcher.onDidDelete((uri) => this.#remove(uri));
+      this.#watchers.set(key, watcher);
+    }
+    const uris = await mdxFilesUnder(contentOf(folder));
     await Promise.all(uris.map((uri) => this.#readFromDisk(uri, false)));
+  }
+
+  async #foldersChanged(event: vscode.WorkspaceFoldersChangeEvent): Promise<void> {
+    for (const folder of event.removed) {
+      this.#watchers.get(folder.uri.toString())?.dispose();
+      this.#watchers.delete(folder.uri.toString());
+      const inside = `${folder.uri.toString().replace(/\/$/, '')}/`;
+      for (const entry of [...this.#entries.values()]) if (entry.uri.toString().startsWith(inside)) this.#remove(entry.uri);
+    }
+    await Promise.all(event.added.map((folder) => this.#readFolder(folder)));
     this.#publish();
   }
 

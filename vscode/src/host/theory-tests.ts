@@ -1,23 +1,31 @@
 /**
  * The chapters' theory checks in the Test Explorer: one item per chapter
  * that has checks, one child per cell that makes one. Running them runs
- * the chapter in its preview (opened in the background if needed) and
- * reads each check's readout: passed, failed with the measured and
- * predicted values, skipped when the formula's regime does not hold, or
- * errored with the cell's error or the reason a check has no verdict.
+ * the chapter in a preview (its own if open, else the one background
+ * preview that test runs share, PreviewManager.forChecks) and reads each
+ * check's readout: passed, failed with the measured and predicted values,
+ * skipped when the formula's regime does not hold, or errored with the
+ * cell's error or the reason a check has no verdict. A check that has no
+ * readout within its time limit fails, saying so.
  */
 import * as vscode from 'vscode';
 import { checkCells, verdictOf, type Verdict } from '../analyzer/theory-checks.ts';
+import type { CheckResult } from '../shared/messages.ts';
 import type { ChapterIndex } from './chapter-index.ts';
 import type { PreviewManager } from './preview/preview-manager.ts';
 import { rangeOf } from './problem-diagnostics.ts';
 
-/** How long a chapter's checks may take to settle: models compile and simulations run first. */
+/** How long a chapter's checks may take to settle, the preview's loading included: models compile and simulations run first. */
 const CHECK_TIMEOUT_MS = 60_000;
+
+/** What a check that had no answer in time gives: a timeout, whatever the preview is doing (loading, or hung). */
+const timedOut = (ids: readonly string[]): CheckResult[] => ids.map((id) => ({ id, state: 'timeout', checks: [] }));
 
 export class TheoryTests implements vscode.Disposable {
   readonly controller: vscode.TestController;
   readonly profile: vscode.TestRunProfile;
+  /** Each check's time limit; the in-host tests shorten it to see it fire. */
+  timeoutMs = CHECK_TIMEOUT_MS;
   readonly #index: ChapterIndex;
   readonly #previews: PreviewManager;
 
@@ -38,12 +46,32 @@ export class TheoryTests implements vscode.Disposable {
     this.controller.dispose();
   }
 
-  /** Runs the chapter's checks (those of `cellIds`, or all) in its preview: a verdict per cell id. */
-  async verdicts(uri: vscode.Uri, cellIds?: readonly string[]): Promise<Map<string, Verdict>> {
+  /**
+   * Runs the chapter's checks (those of `cellIds`, or all) in a preview: a
+   * verdict per cell id. Each check not read within {@link timeoutMs} of
+   * the start (the preview's loading counts) has timed out; a cancelled
+   * `token` ends the wait the same way.
+   */
+  async verdicts(uri: vscode.Uri, cellIds?: readonly string[], token?: vscode.CancellationToken): Promise<Map<string, Verdict>> {
+    const timeoutMs = this.timeoutMs;
     const analysis = this.#index.known(uri) ?? this.#index.analysisOf(await vscode.workspace.openTextDocument(uri));
     const ids = cellIds ?? checkCells(analysis.cells).map(({ cell }) => cell.id);
-    const results = await this.#previews.checks(uri, ids, CHECK_TIMEOUT_MS);
-    return new Map(ids.map((id) => [id, verdictOf(results.find((r) => r.id === id) ?? { id, state: 'missing', checks: [] }, CHECK_TIMEOUT_MS)]));
+    const answer = this.#previews.forChecks(uri).then((preview) => preview.checks(ids, timeoutMs));
+    // An answer that comes after the deadline has nobody waiting for it, and its failure nobody to tell.
+    answer.catch(() => undefined);
+    let timer: ReturnType<typeof setTimeout> | undefined;
+    let cancelled: vscode.Disposable | undefined;
+    const deadline = new Promise<readonly CheckResult[]>((resolve) => {
+      timer = setTimeout(() => resolve(timedOut(ids)), timeoutMs);
+      cancelled = token?.onCancellationRequested(() => resolve(timedOut(ids)));
+    });
+    try {
+      const results = await Promise.race([answer, deadline]);
+      return new Map(ids.map((id) => [id, verdictOf(results.find((r) => r.id === id) ?? { id, state: 'missing', checks: [] }, timeoutMs)]));
+    } finally {
+      clearTimeout(timer);
+      cancelled?.dispose();
+    }
   }
 
   #refreshAll(): void {
@@ -91,11 +119,16 @@ export class TheoryTests implements vscode.Disposable {
         const cellIds = items.map((item) => item.id.slice(chapter.length + 1));
         let verdicts: Map<string, Verdict>;
         try {
-          verdicts = await this.verdicts(vscode.Uri.parse(chapter), cellIds);
+          verdicts = await this.verdicts(vscode.Uri.parse(chapter), cellIds, token);
         } catch (error) {
           // No preview (an untrusted workspace, a chapter that cannot be read): every check of the chapter errs, saying why.
           items.forEach((item) => run.errored(item, new vscode.TestMessage(`The checks could not run: ${(error as Error).message}.`)));
           continue;
+        }
+        // A run stopped from the Test Explorer: the checks it was waiting for judged nothing.
+        if (token.isCancellationRequested) {
+          items.forEach((item) => run.skipped(item));
+          break;
         }
         const duration = Date.now() - started;
         items.forEach((item, i) => {

@@ -30,12 +30,17 @@ const CHROMIUM = process.env.PHASEBOOK_CHROMIUM ?? '/usr/bin/chromium';
 const SUITE_TIMEOUT_MS = 600_000;
 const LOG_FILE = path.join(EXTENSION_DIR, '.vscode-test-web/workbench-console.log');
 
-/** The workspace the suite opens: the fixtures, the book's template, and the template as a chapter with a simulator. */
+/**
+ * The workspace the suite opens, laid out as a fork of the book: the fixtures as its content/, the
+ * book's template, the template as a chapter with a simulator, and the fixtures once more where a
+ * fork keeps them (vscode/test/fixtures/book/content/), which are not the book's chapters.
+ */
 async function prepareWorkspace(): Promise<string> {
   const folder = path.join(EXTENSION_DIR, '.test-workspace');
   await rm(folder, { recursive: true, force: true });
   await mkdir(path.join(folder, 'templates'), { recursive: true });
   await cp(path.join(EXTENSION_DIR, 'test/fixtures/book'), folder, { recursive: true });
+  await cp(path.join(EXTENSION_DIR, 'test/fixtures/book'), path.join(folder, 'vscode/test/fixtures/book'), { recursive: true });
   await cp(path.join(ROOT, 'templates/chapter.mdx'), path.join(folder, 'templates/chapter.mdx'));
   await cp(path.join(ROOT, 'templates/chapter.mdx'), path.join(folder, 'content/pendulum.mdx'));
   return folder;

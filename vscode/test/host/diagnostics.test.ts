@@ -42,4 +42,18 @@ describe('diagnostics', () => {
     await editor.edit((edit) => edit.replace(typo, 'omeqa'));
     await waitFor('the unknown name to come back', () => diagnosticsOf(uri, 'Phasebook').some((d) => d.code === 'unknown-name'));
   });
+
+  it("take the workspace folder's content/ as the book: the fixtures a fork keeps under vscode/test/ are no chapters", async () => {
+    const { index, theoryTests } = await extensionApi();
+    const nested = workspaceFile('vscode/test/fixtures/book/content/broken.mdx');
+    // The driver lays the fixtures out there, as in a fork: the same files as the book's content/ here.
+    expect((await vscode.workspace.fs.stat(nested)).type).to.equal(vscode.FileType.File);
+    const inFixtures = (uri: vscode.Uri) => uri.path.includes('/vscode/test/fixtures/');
+    expect(index.chapters().filter((c) => inFixtures(c.uri))).to.deep.equal([]);
+    expect(index.chapters().map((c) => vscode.workspace.asRelativePath(c.uri))).to.include.members(['content/broken.mdx', 'content/checks.mdx', 'content/unopened.mdx']);
+    expect(vscode.languages.getDiagnostics().filter(([uri, found]) => inFixtures(uri) && found.length > 0)).to.deep.equal([]);
+    const items: string[] = [];
+    theoryTests.controller.items.forEach((item) => items.push(item.id));
+    expect(items.filter((id) => id.includes('/vscode/test/fixtures/'))).to.deep.equal([]);
+  });
 });

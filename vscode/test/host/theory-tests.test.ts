@@ -1,5 +1,6 @@
 import { expect } from 'chai';
 import * as vscode from 'vscode';
+import { PREVIEW_VIEW_TYPE } from '../../src/host/preview/chapter-preview.ts';
 import { diagnosticsOf, extensionApi, waitFor, workspaceFile } from './support.ts';
 
 const children = (item: vscode.TestItem) => {
@@ -25,7 +26,8 @@ async function recordRun(controller: vscode.TestController, act: () => Thenable<
       passed: (item, duration) => (outcomes.push(`passed ${item.label}`), run.passed(item, duration)),
       failed: (item, message, duration) => {
         const m = first(message);
-        outcomes.push(`failed ${item.label}: expected ${m.expectedOutput}, actual ${m.actualOutput}, at line ${m.location?.range.start.line}`);
+        const said = m.expectedOutput === undefined ? String(m.message) : `expected ${m.expectedOutput}, actual ${m.actualOutput}`;
+        outcomes.push(`failed ${item.label}: ${said}, at line ${m.location?.range.start.line}`);
         run.failed(item, message, duration);
       },
       errored: (item, message, duration) => (outcomes.push(`errored ${item.label}: ${first(message).message}`), run.errored(item, message, duration)),
@@ -41,6 +43,10 @@ async function recordRun(controller: vscode.TestController, act: () => Thenable<
   }
   return outcomes;
 }
+
+/** The tabs of Phasebook previews, in every editor group. */
+const previewTabs = () =>
+  vscode.window.tabGroups.all.flatMap((group) => group.tabs).filter((tab) => tab.input instanceof vscode.TabInputWebview && tab.input.viewType.includes(PREVIEW_VIEW_TYPE));
 
 describe('theory checks in the Test Explorer', () => {
   before(extensionApi);
@@ -93,5 +99,52 @@ describe('theory checks in the Test Explorer', () => {
     const verdicts = await theoryTests.verdicts(workspaceFile('content/pendulum.mdx'));
     expect(verdicts.get('periodCheck')).to.deep.include({ outcome: 'passed' });
     expect(verdicts.get('periodCheck')!.message).to.match(/^Period of the pendulum: measured 3\.19\d+, predicted 3\.19\d+.*: agrees$/);
+  });
+
+  it('runs every check of the workspace in one preview, not one per chapter', async () => {
+    const { theoryTests, previews } = await extensionApi();
+    await vscode.window.tabGroups.close(previewTabs());
+    await waitFor('the previews to close', () => previewTabs().length === 0 && !previews.get(workspaceFile('content/checks.mdx')));
+    const stalled = theoryTests.controller.items.get(workspaceFile('content/stalled.mdx').toString())!;
+    const panels = new Set<vscode.WebviewPanel>();
+    const opened = previews.onDidOpen((preview) => panels.add(preview.panel));
+    let outcomes: string[];
+    try {
+      // Every test but the one that never settles (the next test's): no item included means all.
+      outcomes = await recordRun(theoryTests.controller, () =>
+        theoryTests.profile.runHandler(new vscode.TestRunRequest(undefined, [stalled]), new vscode.CancellationTokenSource().token),
+      );
+    } finally {
+      opened.dispose();
+    }
+    // The checks chapter, the pendulum, and the chapter the New chapter test made from the template.
+    expect(outcomes.filter((o) => !o.startsWith('started') && o !== 'end').sort()).to.deep.equal([
+      `failed Pi, roughly: expected ${Math.PI} ± 1 %, actual 3, at line 10`,
+      'passed Period of the pendulum',
+      'passed Period of the pendulum',
+      'passed Two plus two',
+    ]);
+    expect(panels.size, 'webview panels the run opened').to.equal(1);
+    expect(previewTabs(), 'preview tabs after the run').to.have.length(1);
+  });
+
+  it('fails a check that has no verdict within its time limit, saying so', async () => {
+    const { theoryTests } = await extensionApi();
+    const stalled = theoryTests.controller.items.get(workspaceFile('content/stalled.mdx').toString())!;
+    const limit = theoryTests.timeoutMs;
+    theoryTests.timeoutMs = 3000;
+    let outcomes: string[];
+    try {
+      outcomes = await recordRun(theoryTests.controller, () =>
+        theoryTests.profile.runHandler(new vscode.TestRunRequest([stalled]), new vscode.CancellationTokenSource().token),
+      );
+    } finally {
+      theoryTests.timeoutMs = limit;
+    }
+    expect(outcomes).to.deep.equal([
+      'started A simulation that never ends',
+      'failed A simulation that never ends: The check had no verdict after 3 s, its time limit: its cell had not finished., at line 6',
+      'end',
+    ]);
   });
 });

@@ -1,6 +1,6 @@
 import { describe, expect, test } from 'vitest';
 import { analyzeChapter } from '../../src/analyzer/analyze.ts';
-import { checkCells, describeReading, verdictOf } from '../../src/analyzer/theory-checks.ts';
+import { checkCells, describeReading, staticLabel, verdictOf } from '../../src/analyzer/theory-checks.ts';
 import type { CheckResult, TheoryCheckReading } from '../../src/shared/messages.ts';
 import { readBook, readFixture } from './support.ts';
 
@@ -15,6 +15,24 @@ describe('theory checks as tests', () => {
     expect(template.map((c) => [c.cell.id, c.label])).toEqual([['periodCheck', 'Period of the pendulum']]);
     const fixture = checkCells(analyzeChapter(readFixture('checks.mdx'), new Set()).cells);
     expect(fixture.map((c) => [c.cell.id, c.label])).toEqual([['passing', 'Two plus two'], ['failing', 'Pi, roughly']]);
+  });
+
+  test('a label written as a template literal keeps its static parts, each substitution shown as "…"', () => {
+    expect(staticLabel('Order of ${method}')).toBe('Order of …');
+    expect(staticLabel('${a} against ${f({ b: 1 })[0]}')).toBe('… against …');
+    expect(staticLabel('Costs \\${5}')).toBe('Costs \\${5}');
+    const cells = analyzeChapter(
+      ['---', 'title: T', 'order: 1', '---', '', '```js cell', "orders = ['rk38', 'verlet'].map((method) => theoryCheck({label: `Order of ${method}`, measured: 4, predicted: 4, tolerance: 0.1}))", '```', ''].join('\n'),
+      new Set(),
+    ).cells;
+    expect(checkCells(cells).map((c) => c.label)).toEqual(['Order of …']);
+  });
+
+  test("the book's order checks (a check per method, from one cell) are labelled by their static parts", () => {
+    const chapter = checkCells(analyzeChapter(readBook('content/how-the-simulator-integrates.mdx'), new Set()).cells);
+    const labels = chapter.map((c) => c.label);
+    expect(labels).toContain('Order of …');
+    expect(labels.filter((label) => label.includes('${'))).toEqual([]);
   });
 
   test('verdictOf(result): passed when every check agrees', () => {
@@ -39,9 +57,15 @@ describe('theory checks as tests', () => {
     expect(none).toEqual({ outcome: 'errored', message: 'Period: measured —, predicted 3.14; difference —, allowed 1 %: no verdict: the pendulum goes over the top' });
   });
 
-  test('verdictOf(result): errored for a failed cell, a timeout, a missing cell or no check', () => {
+  test('verdictOf(result): failed with a message when the check had no verdict within its time limit', () => {
+    expect(verdictOf({ id: 'a', state: 'timeout', checks: [] }, 60_000)).toEqual({
+      outcome: 'failed',
+      message: 'The check had no verdict after 60 s, its time limit: its cell had not finished.',
+    });
+  });
+
+  test('verdictOf(result): errored for a failed cell, a missing cell or no check', () => {
     expect(verdictOf({ id: 'a', state: 'rejected', error: 'RuntimeError: x is not defined', checks: [] }, 1000)).toEqual({ outcome: 'errored', message: 'RuntimeError: x is not defined' });
-    expect(verdictOf({ id: 'a', state: 'timeout', checks: [] }, 60_000).message).toBe('The cell had not finished after 60 s.');
     expect(verdictOf({ id: 'a', state: 'missing', checks: [] }, 1000).outcome).toBe('errored');
     expect(verdictOf(fulfilled(), 1000).message).toMatch(/no theory check/);
   });

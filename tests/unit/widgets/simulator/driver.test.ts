@@ -7,6 +7,7 @@ import { afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vite
 import { canonicalEquations } from '../../../../core/model/canonical-equations.ts';
 import { Simulation } from '../../../../core/simulation.ts';
 import { Driver } from '../../../../widgets/simulator/driver.ts';
+import { PRINT_SPAN, PRINT_WORK, printSteps } from '../../../../widgets/simulator/print-frame.ts';
 
 /** requestAnimationFrame by hand: `frames(n)` runs n frames 1/60 s apart. */
 function animationFrames() {
@@ -135,5 +136,39 @@ describe('Driver', () => {
     raf.frames(60);
     expect(driver.stats.pace).toBeNull();
     driver.dispose();
+  });
+
+  it('before printing, integrates a paused simulator up to the printed span and draws it: q(t) = cos t of the unit oscillator', () => {
+    animationFrames();
+    viewObserver();
+    const printHandlers: (() => void)[] = [];
+    vi.stubGlobal('addEventListener', (type: string, handler: () => void) => type === 'beforeprint' && printHandlers.push(handler));
+    vi.stubGlobal('removeEventListener', () => {});
+    const drawn: number[] = [];
+    const view = { element: {}, reset() {}, draw: (sim: Simulation) => drawn.push(sim.t), dispose() {} };
+    const simulation = new Simulation(model, { initial: [1, 0], dt: 1e-3 });
+    const driver = new Driver(simulation, [view as never], { element: { isConnected: true } as HTMLElement, worker: false });
+    expect(driver.playing).toBe(false);
+    printHandlers.forEach((print) => print());
+    // The span, at once, with no animation frame: H = (p² + q²)/2 from (1, 0) is q = cos t, p = −sin t (closed form).
+    expect(simulation.t).toBeCloseTo(PRINT_SPAN, 9);
+    expect(drawn).toEqual([simulation.t]);
+    expect(simulation.state[0]).toBeCloseTo(Math.cos(PRINT_SPAN), 9);
+    expect(simulation.state[1]).toBeCloseTo(-Math.sin(PRINT_SPAN), 9);
+    // A simulator already past the span prints what it has.
+    simulation.run(5000);
+    const t = simulation.t;
+    printHandlers.forEach((print) => print());
+    expect(simulation.t).toBe(t);
+    driver.dispose();
+  });
+});
+
+describe('printSteps', () => {
+  it('asks for the steps up to t0 + span, none once there, and fewer for a batch than the work allows', () => {
+    expect(printSteps({ t: 0, t0: 0, dt: 5e-4, count: 1 })).toBe(PRINT_SPAN / 5e-4);
+    expect(printSteps({ t: 4, t0: 2, dt: 0.5, count: 1 }, 10)).toBe(16);
+    expect(printSteps({ t: 12, t0: 2, dt: 0.5, count: 1 }, 10)).toBe(0);
+    expect(printSteps({ t: 0, t0: 0, dt: 5e-4, count: 10_000 })).toBe(PRINT_WORK / 10_000);
   });
 });

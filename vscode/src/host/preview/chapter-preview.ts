@@ -85,13 +85,22 @@ export class ChapterPreview implements vscode.Disposable {
   }
 
   dispose(): void {
+    this.detach().dispose();
+  }
+
+  /**
+   * Lets go of the chapter but not of its webview panel, which another
+   * chapter's preview may then take over (PreviewManager.forChecks): the
+   * preview closes as far as anyone listening can tell, and the panel stays.
+   */
+  detach(): vscode.WebviewPanel {
     clearTimeout(this.#timer);
     this.#diagnostics.delete(this.document.uri);
     for (const disposable of this.#disposables.splice(0)) disposable.dispose();
     this.#closed.fire();
     this.#closed.dispose();
     this.#messages.dispose();
-    this.panel.dispose();
+    return this.panel;
   }
 
   #post(message: HostMessage): void {

@@ -4,9 +4,10 @@
  * chapter's cells run in.
  */
 import * as vscode from 'vscode';
-import type { CheckResult } from '../../shared/messages.ts';
 import type { ChapterIndex } from '../chapter-index.ts';
 import { ChapterPreview, PREVIEW_VIEW_TYPE } from './chapter-preview.ts';
+
+const titleOf = (uri: vscode.Uri) => `Preview ${uri.path.slice(uri.path.lastIndexOf('/') + 1)}`;
 
 export class PreviewManager implements vscode.Disposable {
   readonly #previews = new Map<string, ChapterPreview>();
@@ -14,6 +15,8 @@ export class PreviewManager implements vscode.Disposable {
   readonly #index: ChapterIndex;
   readonly #diagnostics: vscode.DiagnosticCollection;
   readonly #opened = new vscode.EventEmitter<ChapterPreview>();
+  /** The preview test runs opened for themselves (see {@link forChecks}). */
+  #forChecks: ChapterPreview | undefined;
 
   /** Fires when a preview opens. */
   readonly onDidOpen = this.#opened.event;
@@ -35,6 +38,28 @@ export class PreviewManager implements vscode.Disposable {
 
   /** The chapter's preview, opened beside the active editor if it is not open; `focus` brings it forward. */
   async open(uri: vscode.Uri, focus = true): Promise<ChapterPreview> {
+    const preview = await this.#open(uri, focus);
+    // A preview asked for (by the author, a command) is theirs from now on: test runs no longer move it.
+    if (preview === this.#forChecks) this.#forChecks = undefined;
+    return preview;
+  }
+
+  /**
+   * The preview to run a chapter's theory checks in: the chapter's own when
+   * it is open (it shows what the author sees, unsaved edits and all); else
+   * the one preview that runs of the tests keep for themselves, in the
+   * background, moved to this chapter; else that preview, opened now. A run
+   * of every test of the workspace thus opens one preview, not one per chapter.
+   */
+  async forChecks(uri: vscode.Uri): Promise<ChapterPreview> {
+    const own = this.get(uri);
+    if (own) return own;
+    const spare = this.#forChecks;
+    this.#forChecks = spare && this.get(spare.document.uri) === spare ? await this.#move(spare, uri) : await this.#open(uri, false);
+    return this.#forChecks;
+  }
+
+  async #open(uri: vscode.Uri, focus: boolean): Promise<ChapterPreview> {
     // The preview runs the chapter's cells, which are code: not in a workspace the user has not trusted.
     if (!vscode.workspace.isTrusted) throw new Error('the preview runs the chapter’s code, so it opens only in a trusted workspace');
     const known = this.get(uri);
@@ -43,13 +68,20 @@ export class PreviewManager implements vscode.Disposable {
       return known;
     }
     const document = await vscode.workspace.openTextDocument(uri);
-    const title = `Preview ${uri.path.slice(uri.path.lastIndexOf('/') + 1)}`;
-    const panel = vscode.window.createWebviewPanel(PREVIEW_VIEW_TYPE, title, { viewColumn: vscode.ViewColumn.Beside, preserveFocus: true }, {
+    const panel = vscode.window.createWebviewPanel(PREVIEW_VIEW_TYPE, titleOf(uri), { viewColumn: vscode.ViewColumn.Beside, preserveFocus: true }, {
       enableScripts: true,
       // Widgets keep running (and their state) while the preview is behind another tab.
       retainContextWhenHidden: true,
       localResourceRoots: [vscode.Uri.joinPath(this.#extensionUri, 'dist')],
     });
+    return this.#adopt(document, panel);
+  }
+
+  /** The panel of `preview`, which shows another chapter, now showing this one (its page loads afresh). */
+  async #move(preview: ChapterPreview, uri: vscode.Uri): Promise<ChapterPreview> {
+    const document = await vscode.workspace.openTextDocument(uri);
+    const panel = preview.detach();
+    panel.title = titleOf(uri);
     return this.#adopt(document, panel);
   }
 
@@ -78,12 +110,6 @@ export class PreviewManager implements vscode.Disposable {
     preview.onDidClose(() => this.#previews.delete(key));
     this.#opened.fire(preview);
     return preview;
-  }
-
-  /** Runs the theory checks of `cells` of a chapter in its preview (opened in the background if needed). */
-  async checks(uri: vscode.Uri, cells: readonly string[], timeoutMs: number): Promise<readonly CheckResult[]> {
-    const preview = await this.open(uri, false);
-    return preview.checks(cells, timeoutMs);
   }
 
   dispose(): void {
