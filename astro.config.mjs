@@ -5,6 +5,7 @@ import mdx from '@astrojs/mdx';
 import { rehypeHeadingIds } from '@astrojs/markdown-remark';
 import remarkMath from 'remark-math';
 import rehypeKatex from 'rehype-katex';
+import { remarkBaseLinks } from './site/lib/remark-base-links.mjs';
 import { remarkCells, CELL_CODE_LANGUAGE } from './site/lib/remark-cells.mjs';
 import { bookChunks } from './site/lib/chunks.mjs';
 import { linkedPreloads } from './site/lib/linked-preloads.mjs';
@@ -83,7 +84,8 @@ const outDir = process.env.PHASEBOOK_OUT_DIR;
 /**
  * PHASEBOOK_BASE serves the book under a sub-path, e.g. `/phasebook/` for a
  * GitHub project site; unset, the book lives at the root of its host. Links
- * in site/ are built on import.meta.env.BASE_URL so that they follow it.
+ * in site/ are built on import.meta.env.BASE_URL so that they follow it, and
+ * the chapters' root-relative links are put under it by remarkBaseLinks.
  */
 const base = process.env.PHASEBOOK_BASE || undefined;
 
@@ -103,7 +105,7 @@ export default defineConfig({
     inlineStylesheets: 'always',
   },
   markdown: {
-    remarkPlugins: [remarkMath, remarkCells],
+    remarkPlugins: [remarkMath, remarkCells, [remarkBaseLinks, { base }]],
     // Headings get their ids here, before their links are made; Astro's own pass later keeps them.
     rehypePlugins: [rehypeKatex, rehypeHeadingIds, rehypeHeadingAnchors],
     syntaxHighlight: { type: 'shiki', excludeLangs: [CELL_CODE_LANGUAGE] },

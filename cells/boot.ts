@@ -14,6 +14,8 @@
  * A page opened from a shared link (`#share=…`, share-format.ts) runs over an
  * in-memory store holding the link's edits as unrun drafts, apart from the
  * reader's own saved edits (share-session.ts, share-ui.ts, loaded then).
+ * An embed page (`[data-embed-cell]`) keeps its edits in memory and talks to
+ * the page around it (embed.ts, loaded then).
  */
 import { PAGE_DATA_ATTRIBUTE, pageContext, createLibrary, prefetchWidgets, PROVENANCE_EVENT, type ProvenanceRequest, INPUT_EVENT, type WidgetInput } from '../widgets/index.ts';
 import { createBuiltins } from './builtins.ts';
@@ -141,10 +143,12 @@ async function openSharedLink(root: HTMLElement): Promise<SharedView | null> {
   }
 }
 
-/** Wires the Share button under the chapter's title (site/components/ShareEdits.astro). */
+/** Wires the Share and Embed buttons under the chapter's title (site/components/ShareEdits.astro). */
 function wireShareButton(chapter: ChapterCells): void {
   const trigger = document.querySelector<HTMLButtonElement>('[data-share-edits] [data-share-button]');
   trigger?.addEventListener('click', () => void loadShare().then((m) => m.shareEdits(chapter), () => showShareUnavailable('Sharing')));
+  const embed = document.querySelector<HTMLButtonElement>('[data-share-edits] [data-embed-button]');
+  embed?.addEventListener('click', () => void loadShare().then((m) => m.embedWidget(chapter), () => showShareUnavailable('Embedding')));
 }
 
 /**
@@ -172,6 +176,14 @@ function boot(): void {
   const root = document.querySelector<HTMLElement>('[data-chapter]');
   if (!root) return;
   colourCodeWhenNear(root);
+  // An embed page (site/pages/embed/): its own store and its messages with the page around it (embed.ts).
+  if (root.hasAttribute('data-embed-cell')) {
+    void import('./embed.ts').then(
+      (embed) => embed.startEmbed(root, (store) => start(root, null, store)),
+      () => start(root, null),
+    );
+    return;
+  }
   // Pasting another shared link into the address bar changes only the fragment: load the page for it.
   addEventListener('hashchange', () => {
     if (isShareFragment(location.hash)) location.reload();
@@ -183,9 +195,9 @@ function boot(): void {
   void openSharedLink(root).then((shared) => start(root, shared));
 }
 
-async function start(root: HTMLElement, shared: SharedView | null): Promise<void> {
+/** Starts the page's cells over `store`: by default the reader's saved edits, keyed by the page's path. */
+async function start(root: HTMLElement, shared: SharedView | null, store = shared?.store ?? new EditStore(location.pathname)): Promise<ChapterCells> {
   // Keyed by the page's path, base path included: two books on one origin keep their edits apart.
-  const store = shared?.store ?? new EditStore(location.pathname);
   const data = [...document.querySelectorAll(`template[${PAGE_DATA_ATTRIBUTE}]`)].map((t) => t.getAttribute(PAGE_DATA_ATTRIBUTE));
   const page = pageContext(data, () => {
     document.dispatchEvent(new CustomEvent('phasebook:compiling'));
@@ -238,6 +250,7 @@ async function start(root: HTMLElement, shared: SharedView | null): Promise<void
     if (cell && event.storageArea === localStorage) cell.externalChange(store.parseEvent(event.newValue));
   });
   scheduler.watch([...cells]);
+  return chapter;
 }
 
 boot();

@@ -89,6 +89,8 @@ export class LiveCell implements HeldCell {
   /** What the running definition failed with, and the line shown for code of the cell that failed later. */
   #runtimeError: string | null = null;
   #laterError: string | null = null;
+  /** The value the running definition gave, until it runs again (undefined while pending or failed). */
+  #value: unknown = undefined;
 
   constructor(view: CellView, notebook: Notebook, store: EditStore, hooks: CellHooks) {
     this.#view = view;
@@ -99,8 +101,12 @@ export class LiveCell implements HeldCell {
     this.#running = view.originalSource;
     view.setState('waiting');
     this.#variable = notebook.add({
-      pending: () => view.setState('pending'),
+      pending: () => {
+        this.#value = undefined;
+        view.setState('pending');
+      },
       fulfilled: (value, name) => {
+        this.#value = value;
         view.setState('fulfilled');
         this.#runtimeError = null;
         view.setError('runtime', null);
@@ -109,6 +115,7 @@ export class LiveCell implements HeldCell {
         this.#resulted();
       },
       rejected: (error, name) => {
+        this.#value = undefined;
         view.setState('rejected');
         view.clearOutput();
         this.#runtimeError = notebook.describeFailure(error, name);
@@ -278,6 +285,30 @@ export class LiveCell implements HeldCell {
   #setLaterError(message: string | null): void {
     this.#laterError = message;
     this.#view.setError('later', message);
+  }
+
+  /** The cell's current value: what its code last gave, or undefined while it runs or after it failed. */
+  get value(): unknown {
+    return this.#value;
+  }
+
+  /** What the cell's code failed with, as shown under it, or null. */
+  get error(): string | null {
+    return this.#runtimeError;
+  }
+
+  /** The code the cell runs now. */
+  get running(): string {
+    return this.#running;
+  }
+
+  /**
+   * The page around an embed set this cell's code (cells/embed.ts): shown and
+   * run as if the reader had typed it, under the same rules.
+   */
+  setSource(source: string): Promise<void> {
+    this.#showDraft(source);
+    return this.run();
   }
 
   /** The names this cell reads, as it is defined now. */

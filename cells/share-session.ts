@@ -10,30 +10,8 @@
  * before it replaces edits they saved themselves (see {@link keepShared}).
  */
 import type { SharedCell, SharedEdits } from './share-format.ts';
+import { MemoryStorage } from './memory-storage.ts';
 import { EditStore, type AddedCell } from './storage.ts';
-
-/** A Storage that lives as long as the page: the shared view's edits, apart from the reader's own. */
-export class MemoryStorage implements Storage {
-  readonly #items = new Map<string, string>();
-  get length(): number {
-    return this.#items.size;
-  }
-  clear(): void {
-    this.#items.clear();
-  }
-  getItem(key: string): string | null {
-    return this.#items.get(key) ?? null;
-  }
-  key(index: number): string | null {
-    return [...this.#items.keys()][index] ?? null;
-  }
-  removeItem(key: string): void {
-    this.#items.delete(key);
-  }
-  setItem(key: string, value: string): void {
-    this.#items.set(key, String(value));
-  }
-}
 
 /** A chapter cell on the page, as the build rendered it. */
 export interface PageCell {

@@ -11,6 +11,7 @@
  * (a page from an older build has none: then nothing here does anything).
  */
 import type { ChapterCells } from './chapter.ts';
+import { embedSnippet } from './embed-snippet.ts';
 import { shareable } from './share-contents.ts';
 import { decodeShare, encodeShare, type SharedCell } from './share-format.ts';
 import { keepShared, markSharedRun, ownEdits, planShared, sharedStore, type PageCell, type SharedPlan } from './share-session.ts';
@@ -266,4 +267,88 @@ function showConfirm(confirm: HTMLElement, message: string, actions: { label: st
   confirm.hidden = false;
   // On the way out (Cancel), so that Enter pressed at once replaces nothing.
   [...confirm.querySelectorAll<HTMLButtonElement>('button')].at(-1)?.focus();
+}
+
+/** The chapter's embed page of a cell: beside the chapter under the same base, `<base>embed/<chapter>/<cell>/`. */
+function embedPageUrl(slug: string, cell: string): string {
+  const base = location.pathname.replace(/[^/]+\/?$/, '');
+  return `${location.origin}${base}embed/${slug}/${encodeURIComponent(cell)}/`;
+}
+
+/** Of the widgets on offer, the first whose cell reaches into the view: what the reader is looking at. */
+function widgetInView(ids: readonly string[]): string {
+  const seen = ids.find((id) => (document.querySelector(`[data-cell="${CSS.escape(id)}"]`)?.getBoundingClientRect().bottom ?? -1) > 0);
+  return seen ?? ids[0];
+}
+
+/**
+ * What the Embed button does (cells/boot.ts wires it): the HTML that shows
+ * one of the chapter's widgets in another page (embed-snippet.ts), with the
+ * reader's edits of its cells in the link as Share puts them, copied and
+ * shown. The widgets on offer are the chapter's cells that have an embed
+ * page (`data-embeds`, site/components/ShareEdits.astro).
+ */
+export async function embedWidget(chapter: ChapterCells): Promise<void> {
+  const box = bar();
+  const panel = box?.querySelector<HTMLElement>('[data-embed-panel]');
+  const ids = (box?.dataset.embeds ?? '').split(' ').filter(Boolean);
+  if (!panel || ids.length === 0) return;
+  panel.hidden = false;
+  let choice = panel.querySelector<HTMLSelectElement>('[data-embed-choice]');
+  if (!choice) {
+    choice = element('select', '', 'pb-select');
+    choice.id = 'embed-choice';
+    choice.dataset.embedChoice = '';
+    for (const id of ids) choice.append(Object.assign(element('option', id), { value: id }));
+    const choiceLabel = element('label', 'Widget', 'share-label');
+    choiceLabel.htmlFor = choice.id;
+    const status = element('p', '', 'share-status');
+    status.setAttribute('role', 'status');
+    const snippet = element('textarea', '', 'share-link embed-snippet');
+    snippet.id = 'embed-snippet';
+    snippet.readOnly = true;
+    snippet.rows = 6;
+    snippet.dataset.embedSnippet = '';
+    snippet.addEventListener('focus', () => snippet.select());
+    const snippetLabel = element('label', 'HTML to paste into your page', 'share-label');
+    snippetLabel.htmlFor = snippet.id;
+    const note = element(
+      'p',
+      'The iframe shows the widget with the cells it reads folded under it, and the script after it keeps the iframe as tall as the widget; without the script, set a height yourself. Your edits of the chapter’s cells travel in the link, as with Share, and run in the embed as soon as it opens.',
+      'share-note',
+    );
+    panel.replaceChildren(status, choiceLabel, choice, snippetLabel, snippet, note);
+    choice.value = widgetInView(ids);
+    choice.addEventListener('change', () => void showSnippet(chapter, panel));
+  }
+  await showSnippet(chapter, panel);
+  panel.querySelector<HTMLTextAreaElement>('[data-embed-snippet]')?.focus();
+}
+
+async function showSnippet(chapter: ChapterCells, panel: HTMLElement): Promise<void> {
+  const status = panel.querySelector<HTMLElement>('.share-status')!;
+  const snippet = panel.querySelector<HTMLTextAreaElement>('[data-embed-snippet]')!;
+  const cell = panel.querySelector<HTMLSelectElement>('[data-embed-choice]')!.value;
+  const root = document.querySelector<HTMLElement>('[data-chapter]');
+  const slug = root?.dataset.chapter ?? '';
+  // An embed holds the chapter's cells only: cells the reader added stay on this page.
+  const edits = shareable(chapter.cells, chapter.store).cells.filter((c) => c.kind === 'edit');
+  let fragment = '';
+  try {
+    if (edits.length) fragment = `#${await encodeShare({ chapter: slug, cells: edits })}`;
+  } catch (error) {
+    status.textContent = `This browser cannot put your edits into the link (${error instanceof Error ? error.message : String(error)}); the snippet shows the chapter’s original.`;
+  }
+  const title = `${cell} — ${root?.querySelector('h1')?.textContent?.trim() ?? slug} — Phasebook`;
+  snippet.value = embedSnippet({ src: embedPageUrl(slug, cell) + fragment, title });
+  let copied = false;
+  try {
+    await navigator.clipboard.writeText(snippet.value);
+    copied = true;
+  } catch {
+    // No clipboard permission: the field is there to copy from.
+  }
+  if (!fragment && edits.length) return;
+  const what = edits.length ? `with your edits of ${cellsWord(edits.length)}` : 'as the chapter has it';
+  status.textContent = `${copied ? 'Copied' : 'Copy this HTML'}: the widget ${cell}, ${what}.`;
 }

@@ -20,6 +20,26 @@ import type { PageContext } from './chapter/models/page-data.ts';
 import { VIEW_MODULES } from './simulator/view-modules.ts';
 
 /**
+ * The catalogue's names that draw a widget: a cell that calls one shows a
+ * figure a reader can look at on its own, which is what the book offers to
+ * embed (site/pages/embed/). `equations` and `tex` typeset, and the core's
+ * names compute: neither is a widget.
+ */
+export const WIDGET_NAMES: readonly string[] = [
+  'simulator',
+  'timePlot',
+  'trajectoryView',
+  'phasePortrait',
+  'spectrumView',
+  'theoryCheck',
+  'chart',
+  'table',
+  'stabilityChart',
+  'poincareSection',
+  'methodComparison',
+];
+
+/**
  * Starts fetching the modules a cell's widget will need, from what the
  * build left in its output: the simulator's module and its views' together,
  * rather than the views only once the simulator's module has run. Over a

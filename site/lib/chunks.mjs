@@ -63,6 +63,8 @@ const GROUPS = [
   [/^cells\/sandbox\//, 'sandbox'],
   // What the page says when storage or the page itself was damaged.
   [/^cells\/recovery\.ts$/, 'recovery'],
+  // An embed page's side of the page around it (site/pages/embed/): loaded on those pages only.
+  [/^cells\/embed\.ts$/, 'embed'],
   // The cells a reader adds: built only on a page that has one, or when one is added.
   [/^cells\/added-cells\.ts$/, 'added-cells'],
   [/^core\/(?:(?:model|tables|dataset)\/)?(?!index\.ts)[^/]+$|^widgets\/chapter\/models\/cell-simulation\.ts/, 'core'],

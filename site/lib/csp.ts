@@ -30,6 +30,13 @@
  *
  * A blocked request shows under the cell that made it (cells/boot.ts).
  *
+ * Being framed: `frame-ancestors` is not in the policy, on purpose. A policy
+ * in a <meta> tag cannot say it (browsers ignore the directive there, and
+ * say so in the console), so every page of the book may be framed by any
+ * site, which the embed pages (site/pages/embed/) need: chapters and embeds
+ * alike keep this one policy. `frame-src 'none'` is the other direction:
+ * what the book's own pages may frame, which is nothing.
+ *
  * What a policy cannot say is left to the sandbox reader code runs in
  * (cells/sandbox/): navigations (`navigate-to` never shipped; the
  * Navigation API's `navigate` event cancels a cell's, navigation.ts),

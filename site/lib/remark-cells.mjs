@@ -36,7 +36,7 @@ import { describeCell, formatError } from '../../cells/index.ts';
 import { highlightJs, tokenRuns } from './highlight-js.mjs';
 import { precompileChapter } from './precompile.ts';
 import { chapterProblems, reportChapter, FAILS_MARK } from './cell-failures.ts';
-import { PAGE_DATA_ATTRIBUTE } from '../../widgets/index.ts';
+import { PAGE_DATA_ATTRIBUTE, WIDGET_NAMES } from '../../widgets/index.ts';
 
 /** hast's name for the data attribute (`data-phasebook-page-data` → dataPhasebookPageData). */
 const PAGE_DATA_PROPERTY = PAGE_DATA_ATTRIBUTE.replace(/-(\w)/g, (_, c) => c.toUpperCase());
@@ -212,10 +212,24 @@ export function remarkCells() {
     data.astro ??= {};
     data.astro.frontmatter ??= {};
     data.astro.frontmatter.cells = found.length;
+    // Which cell reads which, for the embed pages (site/lib/embeds.ts): one per cell that draws a widget.
+    data.astro.frontmatter.cellGraph = found.map(({ analysis }, i) => cellNode(ids[i], analysis));
     // Carried by the chapter's own markup, so an MDX file that imports another
     // (for-teachers imports the template) brings that file's data along too.
     if (work.data) tree.children.push(/** @type {import('mdast').RootContent} */ (/** @type {unknown} */ (pageDataNode(work.data))));
   };
+}
+
+/**
+ * A cell as the embed pages see it: its id, the name it defines, what it
+ * reads, and whether it draws a widget.
+ * @param {string} id
+ * @param {ReturnType<typeof analyzeCell>} analysis
+ */
+function cellNode(id, analysis) {
+  const spec = 'spec' in analysis ? analysis.spec : null;
+  const inputs = spec ? [...spec.inputs] : [];
+  return { id, name: spec?.name ?? null, inputs, widget: inputs.some((name) => WIDGET_NAMES.includes(name)) };
 }
 
 /**

@@ -38,6 +38,16 @@ describe('remarkCells()', () => {
     expect(file.data.astro.frontmatter.cells).toBe(2);
   });
 
+  test('records which cell reads which, and which draw a widget, for the embed pages', async () => {
+    const { file } = await transform([['cell', 'omega = 10'], ['cell', 'sim = simulator({omega})'], ['cell', 'omega * 2'], ['cell', 'broken = (']]);
+    expect(file.data.astro.frontmatter.cellGraph).toEqual([
+      { id: 'omega', name: 'omega', inputs: [], widget: false },
+      { id: 'sim', name: 'sim', inputs: ['simulator', 'omega'], widget: true },
+      { id: 'cell-3', name: null, inputs: ['omega'], widget: false },
+      { id: 'cell-4', name: null, inputs: [], widget: false },
+    ]);
+  });
+
   test('highlights the source with the editor\'s tok-* classes and keeps its text exact', async () => {
     const { tree } = await transform([['cell', '{\n  return "a";\n}\n\n']]);
     const pre = JSON.stringify(tree.children[0].data.hChildren);

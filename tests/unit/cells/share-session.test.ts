@@ -1,7 +1,8 @@
 import { describe, expect, test } from 'vitest';
 import { DraftKeeper } from '../../../cells/drafts.ts';
 import type { SharedEdits } from '../../../cells/share-format.ts';
-import { keepShared, markSharedRun, MemoryStorage, ownEdits, planShared, sharedStore } from '../../../cells/share-session.ts';
+import { MemoryStorage } from '../../../cells/memory-storage.ts';
+import { keepShared, markSharedRun, ownEdits, planShared, sharedStore } from '../../../cells/share-session.ts';
 import { EditStore } from '../../../cells/storage.ts';
 
 const page = [

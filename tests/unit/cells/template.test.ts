@@ -63,4 +63,10 @@ describe('templates/chapter.mdx', () => {
     });
     expect(new Set(names).size).toBe(names.length);
   });
+
+  it('links to other chapters relatively (../name/), which resolves under any base path and in any preview', () => {
+    const links = [...source.matchAll(/\]\(([^)\s]+)\)/g)].map((m) => m[1]);
+    expect(links).toContain('../introduction/');
+    expect(links.filter((url) => url.startsWith('/') && !url.startsWith('//'))).toEqual([]);
+  });
 });
