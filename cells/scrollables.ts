@@ -49,24 +49,9 @@ function apply(box: HTMLElement, wide: boolean): void {
  * Boxes far from the view still need their marks: a keyboard reader tabs
  * through the page without bringing each formula into view first. Asking
  * for their content's geometry lays that content out for the reading, a few
- * milliseconds each, so it is done a few at a time while the page is idle,
- * and only for a reader who uses the keyboard: done for every reader, at
- * the page's start, it was the page's longest task on a phone (a forced
- * layout of 0.9 s under Lighthouse's mobile preset), for tab stops nobody
- * pressing a screen will ever reach. A reader who scrolls gets the marks of
- * each box as it comes near (watchScrollables).
+ * milliseconds each, so it is done a few at a time while the page is idle.
  */
 const hidden = new Set<HTMLElement>();
-
-/** Whether the reader has pressed Tab on this page: then the boxes far from the view are marked too. */
-let tabbing = false;
-
-function startTabbing(event: KeyboardEvent): void {
-  if (event.key !== 'Tab' || tabbing) return;
-  tabbing = true;
-  removeEventListener('keydown', startTabbing, true);
-  if (hidden.size) markHiddenWhenIdle();
-}
 
 /**
  * Marks `boxes`: every width is read before any box is changed. Reading
@@ -79,7 +64,7 @@ function markAll(boxes: readonly HTMLElement[]): void {
   for (const box of boxes) (laidOut(box) ? shown.push(box) : hidden.add(box));
   const wide = shown.map(overflows);
   shown.forEach((box, i) => apply(box, wide[i]));
-  if (hidden.size && tabbing) markHiddenWhenIdle();
+  if (hidden.size) markHiddenWhenIdle();
 }
 
 /** What is inside `box`: the box may be a block skipped far from the view itself, so its content is asked. */
@@ -141,7 +126,6 @@ function flush(): void {
 
 /** Marks the overflowing boxes of `root` after the first paint, after every change of its width, and when fonts arrive. */
 export function watchScrollables(root: HTMLElement): void {
-  addEventListener('keydown', startTabbing, true);
   const all = () => root.querySelectorAll<HTMLElement>(SCROLLERS).forEach(markSoon);
   all();
   // A face requested by the first layout (KaTeX's, the code font's) may still be used if it arrives within

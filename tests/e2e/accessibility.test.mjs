@@ -9,7 +9,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { after, before, test } from 'node:test';
-import { cell, cellsReady, firstViewReady, openChapter, openSite } from './fixture.mjs';
+import { cell, cellsReady, openChapter, openSite } from './fixture.mjs';
 
 /** @type {Awaited<ReturnType<typeof openSite>>} */
 let site;
@@ -122,28 +122,6 @@ test('display math wider than a phone’s column can be reached by keyboard and 
       assert.equal(s.role, 'region');
     }
   }
-  await page.close();
-});
-
-test('a reader who presses Tab gets the formulas far from the view marked too, without scrolling to them', async () => {
-  const page = await site.context.newPage();
-  await page.setViewportSize({ width: 360, height: 800 });
-  await page.goto(`${site.origin}/kepler/`);
-  await firstViewReady(page);
-  // Far formulas are not laid out (content-visibility), so they are marked only as they come near, or once the
-  // reader shows they use the keyboard (cells/scrollables.ts): a phone reader's start does not pay for tab stops.
-  const marked = () => page.evaluate(() => document.querySelectorAll('.katex-display[data-scrollable]').length);
-  const farWide = () =>
-    page.evaluate(() => {
-      const far = [...document.querySelectorAll('.katex-display')].filter((box) => box.getBoundingClientRect().top > 3 * innerHeight);
-      return far.filter((box) => box.hasAttribute('data-scrollable')).length;
-    });
-  const before = await marked();
-  assert.equal(await farWide(), 0, 'no far formula is marked before the reader tabs');
-  await page.keyboard.press('Tab');
-  await page.waitForFunction((n) => document.querySelectorAll('.katex-display[data-scrollable]').length > n, before, { timeout: 30_000 });
-  assert.ok((await farWide()) > 0, 'far formulas wider than the phone are marked');
-  assert.equal(await page.evaluate(() => scrollY), 0, 'without scrolling');
   await page.close();
 });
 
