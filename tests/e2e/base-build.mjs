@@ -6,7 +6,8 @@
  * built again whenever the site under test is newer.
  */
 import { spawn } from 'node:child_process';
-import { existsSync, statSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { setTimeout as sleep } from 'node:timers/promises';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { DIST } from './server.mjs';
@@ -20,9 +21,57 @@ export const BASE_DIST =
 
 const builtAt = (dir) => (existsSync(join(dir, 'index.html')) ? statSync(join(dir, 'index.html')).mtimeMs : -Infinity);
 
-/** Builds the base-path site unless one at least as new as the site under test is there. */
+/**
+ * Builds the base-path site unless one at least as new as the site under test is there. Test files run
+ * in processes of their own, and two of them building into one folder at once break each other's build:
+ * the first to make the lock folder builds, the others wait for it to go and then find the build done.
+ * A lock whose process has died is taken over.
+ */
 export async function ensureBaseBuild(log = () => {}) {
-  if (builtAt(BASE_DIST) >= builtAt(DIST)) return;
+  const lock = `${BASE_DIST.replace(/\/+$/, '')}.lock`;
+  for (;;) {
+    if (builtAt(BASE_DIST) >= builtAt(DIST)) return;
+    if (takeLock(lock)) break;
+    await sleep(500);
+  }
+  try {
+    if (builtAt(BASE_DIST) >= builtAt(DIST)) return;
+    await build(log);
+  } finally {
+    rmSync(lock, { recursive: true, force: true });
+  }
+}
+
+/** Makes the lock folder (atomic), or takes it over from a process that is gone; whether this process holds it. */
+function takeLock(lock) {
+  try {
+    mkdirSync(lock);
+    writeFileSync(join(lock, 'pid'), String(process.pid));
+    return true;
+  } catch (error) {
+    if (error.code !== 'EEXIST') throw error;
+  }
+  let holder = NaN;
+  try {
+    holder = Number(readFileSync(join(lock, 'pid'), 'utf8'));
+  } catch {
+    return false; // being made this instant: its pid is on its way
+  }
+  if (alive(holder)) return false;
+  rmSync(lock, { recursive: true, force: true });
+  return takeLock(lock);
+}
+
+function alive(pid) {
+  try {
+    process.kill(pid, 0);
+    return true;
+  } catch (error) {
+    return error.code === 'EPERM';
+  }
+}
+
+async function build(log) {
   log(`building the book for ${BASE} into ${BASE_DIST}`);
   const child = spawn('npx', ['astro', 'build'], {
     cwd: ROOT,

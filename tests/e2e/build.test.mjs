@@ -52,7 +52,8 @@ async function filesUnder(dir) {
 
 /** The kinds of file a static host serves for the book: its pages, their scripts, styles and fonts, and the search index. */
 const STATIC_KINDS = [
-  /^(?:[a-z0-9-]+\/)*index\.html$/,
+  // chapters are kebab-case, and embeds are /embed/<chapter>/<cell>/, a cell's name in camelCase
+  /^(?:[A-Za-z0-9-]+\/)*index\.html$/,
   /^404\.html$/,
   /^_astro\/[^/]+\.(?:js|css|woff2?|ttf|svg|png|webp)$/,
   /^pagefind\/(?:[^/]+\/)*[^/]+\.(?:js|css|json|pf_fragment|pf_index|pf_meta|pagefind)$/,
