@@ -6,6 +6,7 @@ import { rehypeHeadingIds } from '@astrojs/markdown-remark';
 import remarkMath from 'remark-math';
 import rehypeKatex from 'rehype-katex';
 import { remarkCells, CELL_CODE_LANGUAGE } from './site/lib/remark-cells.mjs';
+import { remarkExercises } from './site/lib/remark-exercises.mjs';
 import { bookChunks } from './site/lib/chunks.mjs';
 import { linkedPreloads } from './site/lib/linked-preloads.mjs';
 import { rehypeHeadingAnchors } from './site/lib/rehype-heading-anchors.mjs';
@@ -72,7 +73,7 @@ export default defineConfig({
     inlineStylesheets: 'always',
   },
   markdown: {
-    remarkPlugins: [remarkMath, remarkCells],
+    remarkPlugins: [remarkMath, remarkCells, remarkExercises],
     // Headings get their ids here, before their links are made; Astro's own pass later keeps them.
     rehypePlugins: [rehypeKatex, rehypeHeadingIds, rehypeHeadingAnchors],
     syntaxHighlight: { type: 'shiki', excludeLangs: [CELL_CODE_LANGUAGE] },

@@ -32,6 +32,7 @@ import type { SharedView } from './share-ui.ts';
 import { CellView } from './cell-view.ts';
 import { loadFailure } from './load-failure.ts';
 import type { Sandbox } from './sandbox/index.ts';
+import type { ExercisePage } from './exercises.ts';
 
 function markReady(): void {
   document.body.dataset.cellsReady = '';
@@ -181,7 +182,8 @@ async function start(root: HTMLElement, shared: SharedView | null): Promise<void
   const page = pageContext(data, () => {
     document.dispatchEvent(new CustomEvent('phasebook:compiling'));
   });
-  const notebook = new Notebook(createBuiltins(root, createLibrary(page, currentCellSignal)));
+  const library = createLibrary(page, currentCellSignal);
+  const notebook = new Notebook(createBuiltins(root, library));
   const math = new MathSnapshot();
   const scheduler = new CellScheduler(markReady, markComplete, (cell) => prefetchWidgets(cell.root));
   const sandbox = pageSandbox(store, () => chapter.cells);
@@ -221,6 +223,31 @@ async function start(root: HTMLElement, shared: SharedView | null): Promise<void
     if (cell && event.storageArea === localStorage) cell.externalChange(store.parseEvent(event.newValue));
   });
   scheduler.watch([...cells]);
+  watchExercises(root, {
+    notebook,
+    cells: () => chapter.cells,
+    want: (cell) => scheduler.want(cell),
+    model: (spec) => library.canonicalEquations().then((build) => build(spec)),
+  });
+}
+
+/**
+ * The chapter's exercises (site/lib/remark-exercises.mjs) start when one
+ * first comes near the view: their code (exercises.ts and the widget) is
+ * then loaded, never with the chapter's first paint.
+ */
+function watchExercises(root: HTMLElement, page: ExercisePage): void {
+  const exercises = [...root.querySelectorAll<HTMLElement>('[data-exercise]')];
+  if (!exercises.length) return;
+  const observer = new IntersectionObserver((entries) => {
+    if (!entries.some((entry) => entry.isIntersecting)) return;
+    observer.disconnect();
+    void import('./exercises.ts').then(
+      (m) => m.startExercises(exercises, page),
+      () => exercises.forEach((exercise) => exercise.querySelector('[data-exercise-body]')?.replaceChildren(loadFailure('This exercise').message)),
+    );
+  }, { rootMargin: '800px 0px' });
+  exercises.forEach((exercise) => observer.observe(exercise));
 }
 
 boot();
