@@ -4,7 +4,6 @@
  * resets it. Every failure is said in the page's status line.
  */
 import { type ChapterExercises, type ExerciseRecord, ProgressStore } from '../../cells/index.ts';
-import { downloadText } from '../../widgets/index.ts';
 
 function describe(record: ExerciseRecord | null): string {
   if (!record) return 'Not tried';
@@ -38,8 +37,16 @@ function start(): void {
   if (!store.available) say('This browser keeps nothing for this site (private mode, or storage switched off): no progress can be shown or kept here.');
   show();
 
-  document.querySelector('[data-progress-export]')?.addEventListener('click', () => {
+  document.querySelector('[data-progress-export]')?.addEventListener('click', async () => {
     const file = store.exportFile(chapters);
+    let downloadText: typeof import('../../widgets/exports/download.ts').downloadText;
+    try {
+      // Rarely wanted, so its module loads then, as the cells' own download of edits does (cells/boot.ts).
+      ({ downloadText } = await import('../../widgets/exports/download.ts'));
+    } catch {
+      say('The export could not be made: the connection to the book’s site seems to be lost. Reload the page when you are back online.');
+      return;
+    }
     downloadText([JSON.stringify(file, null, 2)], 'application/json', 'phasebook-progress.json');
     const count = Object.values(file.chapters).reduce((n, records) => n + Object.keys(records).length, 0);
     say(`Exported ${count} exercise result${count === 1 ? '' : 's'} to phasebook-progress.json.`);
