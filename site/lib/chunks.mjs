@@ -37,7 +37,7 @@ const LAZY = [
   // The search box's code, which its inline script imports when the reader asks (site/lib/search-box.ts).
   [/^site\/search\//, 'search'],
   // The exercises: their widget and what connects it to the cells and keeps progress, loaded when an exercise comes near the view (cells/boot.ts).
-  [/^cells\/(exercises|progress)\.ts$|^widgets\/chapter\/exercise\//, 'exercises'],
+  [/^cells\/(exercises|progress)\.ts$|^widgets\/chapter\/exercise\/|^site\/lib\/progress-page\.ts$/, 'exercises'],
 ];
 
 /** Every other module of the book, by what loads it; the first rule that matches wins. */

@@ -246,22 +246,29 @@ function extras(info: PublicExercise, sealed: SealedParts, host: ExerciseHost, a
   if (info.simulate) {
     const setup = info.simulate;
     let undo: (() => void) | null = null;
+    const problem = element('p', { className: 'exercise-problem', hidden: true });
+    problem.setAttribute('role', 'alert');
+    const say = (text: string | null) => {
+      problem.hidden = text === null;
+      problem.textContent = text ?? '';
+    };
+    area.append(problem);
     const simulate = button('Show me in the simulator', () => {
       if (undo) {
         undo();
         undo = null;
         simulate.textContent = 'Show me in the simulator';
-        kept(null);
+        say(null);
         return;
       }
       const result = host.setCells(setup);
       if ('error' in result) {
-        kept(result.error);
+        say(result.error);
         return;
       }
       undo = result.undo;
       simulate.textContent = 'Undo: put the cells back';
-      kept(null);
+      say(null);
     });
     simulate.dataset.exerciseSimulate = '';
     bar.append(simulate);
