@@ -246,7 +246,7 @@ function watchExercises(root: HTMLElement, page: ExercisePage): void {
       (m) => m.startExercises(exercises, page),
       () => exercises.forEach((exercise) => exercise.querySelector('[data-exercise-body]')?.replaceChildren(loadFailure('This exercise').message)),
     );
-  }, { rootMargin: '800px 0px' });
+  }, { rootMargin: '200px 0px' });
   exercises.forEach((exercise) => observer.observe(exercise));
 }
 

@@ -36,8 +36,6 @@ const LAZY = [
   [/^node_modules\/(@observablehq\/parser|acorn|acorn-walk)\//, 'parser'],
   // The search box's code, which its inline script imports when the reader asks (site/lib/search-box.ts).
   [/^site\/search\//, 'search'],
-  // The exercises: their widget and what connects it to the cells and keeps progress, loaded when an exercise comes near the view (cells/boot.ts).
-  [/^cells\/(exercises|progress)\.ts$|^widgets\/chapter\/exercise\/|^site\/lib\/progress-page\.ts$/, 'exercises'],
 ];
 
 /** Every other module of the book, by what loads it; the first rule that matches wins. */

@@ -43,7 +43,7 @@ const exercise = (page, id) => page.locator(`[data-exercise="${id}"]`);
 /** Scrolls to the exercise and waits until it is live. */
 async function reach(page, id) {
   await exercise(page, id).scrollIntoViewIfNeeded();
-  await page.waitForSelector(`[data-exercise="${id}"][data-exercise-live] [data-exercise-feedback]`, { timeout: 30_000 });
+  await page.waitForSelector(`[data-exercise="${id}"][data-exercise-live] [data-exercise-feedback]`, { state: 'attached', timeout: 30_000 });
 }
 
 /** Runs `act`, then waits for the exercise's new verdict and returns its text and result. */
@@ -96,11 +96,11 @@ function frequencyByRk4(omega0, alpha, beta, b) {
   return (2 * Math.PI * (ups.length - 1)) / (ups[ups.length - 1] - ups[0]);
 }
 
-test('no exercise code loads with the introduction’s first view; it loads when an exercise comes near', async () => {
-  const { page, requests, problems } = await open('/introduction/');
+test('no exercise code loads with a chapter’s first view; it loads when an exercise comes near', async () => {
+  const { page, requests, problems } = await open('/nonlinear-oscillator/');
   await page.waitForTimeout(300);
   assert.deepEqual(requests.filter((url) => EXERCISE_CHUNK.test(url)), []);
-  await reach(page, 'drive-line');
+  await reach(page, 'escape-amplitude');
   assert.ok(requests.some((url) => EXERCISE_CHUNK.test(url)));
   assert.deepEqual(problems, []);
   await page.close();
@@ -277,6 +277,9 @@ test('a browser that keeps nothing: the exercise still grades, and says its resu
       throw new DOMException('full', 'QuotaExceededError');
     };
   });
+  // Nothing kept from earlier tests either: not even the book's secret, which nothing can now write.
+  await page.goto(`${site.origin}/`);
+  await page.evaluate(() => localStorage.clear());
   await page.goto(`${site.origin}/introduction/`);
   await firstViewReady(page);
   const v = await answer(page, 'drive-line', '1.2732');
