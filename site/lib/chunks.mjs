@@ -36,6 +36,8 @@ const LAZY = [
   [/^node_modules\/(@observablehq\/parser|acorn|acorn-walk)\//, 'parser'],
   // The search box's code, which its inline script imports when the reader asks (site/lib/search-box.ts).
   [/^site\/search\//, 'search'],
+  // The progress page's script (site/pages/progress.astro), an entry that would otherwise join the boot chunk and run on every page.
+  [/^site\/pages\/progress\.astro\?/, 'progress'],
 ];
 
 /** Every other module of the book, by what loads it; the first rule that matches wins. */

@@ -72,7 +72,9 @@ async function answer(page, id, text) {
 async function answerCode(page, id, cellName, source) {
   await reach(page, id);
   await typeIntoCell(page, cellName, source);
-  await waitForOutput(page, cellName, (out) => out.includes(source.split(' = ')[1]?.slice(0, 6) ?? '') || out === '', 10_000).catch(() => undefined);
+  // The check reads the cell's value as it is: wait until the edit has run (its value shown, or its error).
+  const value = source.slice(source.indexOf('=') + 1).trim();
+  await waitForOutput(page, cellName, (out) => out.includes(value) || out === '', 10_000).catch(() => undefined);
   return verdictAfter(page, id, () => exercise(page, id).getByRole('button', { name: 'Check my code' }).click());
 }
 
