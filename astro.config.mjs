@@ -7,6 +7,7 @@ import remarkMath from 'remark-math';
 import rehypeKatex from 'rehype-katex';
 import { remarkBaseLinks } from './site/lib/remark-base-links.mjs';
 import { remarkCells, CELL_CODE_LANGUAGE } from './site/lib/remark-cells.mjs';
+import { remarkExercises } from './site/lib/remark-exercises.mjs';
 import { bookChunks } from './site/lib/chunks.mjs';
 import { linkedPreloads } from './site/lib/linked-preloads.mjs';
 import { rehypeHeadingAnchors } from './site/lib/rehype-heading-anchors.mjs';
@@ -105,7 +106,7 @@ export default defineConfig({
     inlineStylesheets: 'always',
   },
   markdown: {
-    remarkPlugins: [remarkMath, remarkCells, [remarkBaseLinks, { base }]],
+    remarkPlugins: [remarkMath, remarkCells, remarkExercises, [remarkBaseLinks, { base }]],
     // Headings get their ids here, before their links are made; Astro's own pass later keeps them.
     rehypePlugins: [rehypeKatex, rehypeHeadingIds, rehypeHeadingAnchors],
     syntaxHighlight: { type: 'shiki', excludeLangs: [CELL_CODE_LANGUAGE] },

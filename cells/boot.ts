@@ -37,6 +37,7 @@ import { loadFailure } from './load-failure.ts';
 import type { Sandbox } from './sandbox/index.ts';
 import { captionFigures } from './print-captions.ts';
 import { wireHandout } from './handout.ts';
+import type { ExercisePage } from './exercises.ts';
 
 function markReady(): void {
   document.body.dataset.cellsReady = '';
@@ -202,7 +203,8 @@ async function start(root: HTMLElement, shared: SharedView | null, store = share
   const page = pageContext(data, () => {
     document.dispatchEvent(new CustomEvent('phasebook:compiling'));
   });
-  const notebook = new Notebook(createBuiltins(root, createLibrary(page, currentCellSignal)));
+  const library = createLibrary(page, currentCellSignal);
+  const notebook = new Notebook(createBuiltins(root, library));
   const math = new MathSnapshot();
   const scheduler = new CellScheduler(markReady, markComplete, (cell) => prefetchWidgets(cell.root));
   const sandbox = pageSandbox(store, () => chapter.cells);
@@ -250,7 +252,32 @@ async function start(root: HTMLElement, shared: SharedView | null, store = share
     if (cell && event.storageArea === localStorage) cell.externalChange(store.parseEvent(event.newValue));
   });
   scheduler.watch([...cells]);
+  watchExercises(root, {
+    notebook,
+    cells: () => chapter.cells,
+    want: (cell) => scheduler.want(cell),
+    model: (spec) => library.canonicalEquations().then((build) => build(spec)),
+  });
   return chapter;
+}
+
+/**
+ * The chapter's exercises (site/lib/remark-exercises.mjs) start when one
+ * first comes near the view: their code (exercises.ts and the widget) is
+ * then loaded, never with the chapter's first paint.
+ */
+function watchExercises(root: HTMLElement, page: ExercisePage): void {
+  const exercises = [...root.querySelectorAll<HTMLElement>('[data-exercise]')];
+  if (!exercises.length) return;
+  const observer = new IntersectionObserver((entries) => {
+    if (!entries.some((entry) => entry.isIntersecting)) return;
+    observer.disconnect();
+    void import('./exercises.ts').then(
+      (m) => m.startExercises(exercises, page),
+      () => exercises.forEach((exercise) => exercise.querySelector('[data-exercise-body]')?.replaceChildren(loadFailure('This exercise').message)),
+    );
+  }, { rootMargin: '200px 0px' });
+  exercises.forEach((exercise) => observer.observe(exercise));
 }
 
 boot();

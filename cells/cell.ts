@@ -323,7 +323,12 @@ export class LiveCell implements HeldCell {
   setFromWidget(value: number): void {
     const name = this.name;
     if (!name) return;
-    this.#showDraft(`${name} = ${value}`);
+    this.setSource(`${name} = ${value}`);
+  }
+
+  /** Shows `source` in the cell and runs it, as the reader's edit (an exercise's "show me in the simulator" and its undo). */
+  setSource(source: string): void {
+    this.#showDraft(source);
     void this.run();
   }
 

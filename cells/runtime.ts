@@ -103,6 +103,11 @@ export class Notebook {
     variable.delete();
   }
 
+  /** The value `name` has once computed (a rejection carries what its cell failed with). */
+  value(name: string): Promise<unknown> {
+    return this.#module.value(name);
+  }
+
   /** True when a cell (not a builtin, not an unknown name) defines `name`. */
   isCell(name: string): boolean {
     return this.#definers.has(name);

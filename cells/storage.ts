@@ -75,6 +75,38 @@ function randomId(): string {
   return Array.from(bytes, (b) => b.toString(16).padStart(2, '0')).join('');
 }
 
+/**
+ * The browser's secret for this book: read, or drawn and kept (`drawn`);
+ * null when storage cannot keep it. Shared by everything this book keeps
+ * (edits here, exercise progress in progress.ts).
+ */
+export function bookSecret(storage: Storage | null): { secret: string | null; drawn: boolean } {
+  let existing: string | null = null;
+  try {
+    existing = storage?.getItem(SECRET_KEY) ?? null;
+  } catch {
+    existing = null;
+  }
+  if (existing && /^[0-9a-f]{32}$/.test(existing)) return { secret: existing, drawn: false };
+  if (!storage) return { secret: null, drawn: false };
+  const secret = randomId();
+  try {
+    storage.setItem(SECRET_KEY, secret);
+    return storage.getItem(SECRET_KEY) === secret ? { secret, drawn: true } : { secret: null, drawn: false };
+  } catch {
+    return { secret: null, drawn: false };
+  }
+}
+
+/** The key prefix of everything this book keeps for one page in this browser, or null when nothing can be kept. */
+export function pagePrefix(secret: string | null, page: string): string | null {
+  return secret ? `${VERSION}:${secret}:${page}` : null;
+}
+
+export function defaultBookStorage(): Storage | null {
+  return defaultStorage();
+}
+
 function isSavedEdit(value: unknown): value is SavedEdit {
   if (typeof value !== 'object' || value === null) return false;
   const edit = value as Record<string, unknown>;
@@ -99,8 +131,8 @@ export class EditStore {
     this.#storage = storage;
     this.#page = page;
     this.tab = tab;
-    const { secret, drawn } = this.#secret();
-    this.#prefix = secret ? `${VERSION}:${secret}:${page}` : null;
+    const { secret, drawn } = bookSecret(this.#storage);
+    this.#prefix = pagePrefix(secret, page);
     if (drawn) this.#setAsideOrphans();
   }
 
@@ -220,20 +252,6 @@ export class EditStore {
   /** Parses the new value of a `storage` event for cell `cellId` (null: removed or not an edit). */
   parseEvent(value: string | null): SavedEdit | null {
     return this.#parse(value);
-  }
-
-  /** The browser's secret for this book: read, or drawn and kept (`drawn`); null when storage cannot keep it. */
-  #secret(): { secret: string | null; drawn: boolean } {
-    const existing = this.#get(SECRET_KEY);
-    if (existing && /^[0-9a-f]{32}$/.test(existing)) return { secret: existing, drawn: false };
-    if (!this.#storage) return { secret: null, drawn: false };
-    const secret = randomId();
-    try {
-      this.#storage.setItem(SECRET_KEY, secret);
-      return this.#storage.getItem(SECRET_KEY) === secret ? { secret, drawn: true } : { secret: null, drawn: false };
-    } catch {
-      return { secret: null, drawn: false };
-    }
   }
 
   /**

@@ -55,6 +55,8 @@ export { largestLyapunov } from './analysis/lyapunov.ts';
 export { verletCorrection } from './analysis/modified-hamiltonian.ts';
 export { localSlopes, METHOD_ORDERS, orderCheck, orderStudy, type OrderStudyInput } from './analysis/order-study.ts';
 export { completeEllipticK, pendulumPeriod } from './analysis/pendulum.ts';
+export { rk4Amplification, rk4StabilityLimit } from './analysis/rk-stability.ts';
+export { turningPoint, wellPeriod } from './analysis/well-period.ts';
 export { chaoticArea, type ChaoticArea, sectionBox } from './analysis/poincare-area.ts';
 export { allowed, launchState, type Plane, planeIndices, section } from './analysis/poincare.ts';
 export { angleBetween, deflectionFrom, outgoingDirection, rutherfordAngle } from './analysis/scattering.ts';

@@ -24,6 +24,8 @@ declare module '@observablehq/runtime' {
 
   export interface Module {
     variable(observer?: Observer): Variable;
+    /** The named variable's value once computed; rejects with its error, or when nothing defines the name. */
+    value(name: string): Promise<unknown>;
   }
 
   export class Runtime {

@@ -53,6 +53,9 @@ export function prefetchWidgets(cell: Element): void {
   for (const load of [() => import('./simulator/simulator.ts'), ...views.map((v) => VIEW_MODULES[v])]) load().catch(() => undefined);
 }
 
+/** The exercises' widget (chapter/exercise/exercise.ts), loaded when an exercise first comes near the view. */
+export const loadExerciseWidget = () => import('./chapter/exercise/exercise.ts');
+
 /**
  * The catalogue: each name's loader, called once, when a cell first names it
  * (cells/builtins.ts takes it as its `Loaders`). Its return type is left to

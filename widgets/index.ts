@@ -9,7 +9,10 @@
  * one (site/lib/chunks.mjs), so importing one never brings the rest into a
  * page's first load.
  */
-export { createLibrary, prefetchWidgets, WIDGET_NAMES } from './catalogue.ts';
+export { createLibrary, loadExerciseWidget, prefetchWidgets, WIDGET_NAMES } from './catalogue.ts';
+export type { ExerciseHost, ProgressView } from './chapter/exercise/exercise.ts';
+export { exercisesInText, type Exercise, KIND_NAMES, parseExercise, publicPart, sealedPart } from './chapter/exercise/exercise-spec.ts';
+export { seal } from './chapter/exercise/seal.ts';
 export { memoryStore, PAGE_DATA_ATTRIBUTE, PAGE_DATA_FORMAT, pageContext, type PageContext, type PageData } from './chapter/models/page-data.ts';
 export { equationsHtml, equationsLatex, katexOptions, texHtml, typesetKey } from './chapter/math/typeset.ts';
 export { downloadText } from './exports/download.ts';

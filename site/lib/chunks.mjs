@@ -36,6 +36,8 @@ const LAZY = [
   [/^node_modules\/(@observablehq\/parser|acorn|acorn-walk)\//, 'parser'],
   // The search box's code, which its inline script imports when the reader asks (site/lib/search-box.ts).
   [/^site\/search\//, 'search'],
+  // The progress page's script (site/pages/progress.astro), an entry that would otherwise join the boot chunk and run on every page.
+  [/^site\/pages\/progress\.astro\?/, 'progress'],
 ];
 
 /** Every other module of the book, by what loads it; the first rule that matches wins. */
@@ -73,8 +75,8 @@ const GROUPS = [
   [/^widgets\/chapter\/math\//, 'tex'],
 ];
 
-/** The front doors of the core and of the widgets: what the boot code imports through one is followed name by name. */
-const FRONT_DOOR = /^(core|widgets)\/index\.ts$/;
+/** The front doors of the core, the widgets and the cells: what the boot code imports through one is followed name by name. */
+const FRONT_DOOR = /^(core|widgets|cells)\/index\.ts$/;
 
 /** The names `code` imports from the front door of `folder` (its index.ts). */
 function namesThroughDoor(code, folder) {
