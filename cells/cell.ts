@@ -303,8 +303,9 @@ export class LiveCell implements HeldCell {
   }
 
   /**
-   * The page around an embed set this cell's code (cells/embed.ts): shown and
-   * run as if the reader had typed it, under the same rules.
+   * Shows `source` in the cell and runs it as if the reader had typed it, under
+   * the same rules: the page around an embed setting a cell (cells/embed.ts),
+   * an exercise's "show me in the simulator" and its undo (cells/exercises.ts).
    */
   setSource(source: string): Promise<void> {
     this.#showDraft(source);
@@ -323,13 +324,7 @@ export class LiveCell implements HeldCell {
   setFromWidget(value: number): void {
     const name = this.name;
     if (!name) return;
-    this.setSource(`${name} = ${value}`);
-  }
-
-  /** Shows `source` in the cell and runs it, as the reader's edit (an exercise's "show me in the simulator" and its undo). */
-  setSource(source: string): void {
-    this.#showDraft(source);
-    void this.run();
+    void this.setSource(`${name} = ${value}`);
   }
 
   /** Another tab saved (or removed) this cell's edit. */

@@ -51,12 +51,12 @@ export function exerciseHost(page: ExercisePage, store = new ProgressStore(), pa
       const before = targets.map(({ cell }) => ({ cell: cell!, edit: cell!.edit }));
       for (const { cell, source } of targets) {
         page.want(cell!);
-        cell!.setSource(source);
+        void cell!.setSource(source);
       }
       return {
         undo: () => {
           for (const { cell, edit } of before) {
-            if (edit) cell.setSource(edit.running);
+            if (edit) void cell.setSource(edit.running);
             else cell.reset();
           }
         },
