@@ -18,7 +18,9 @@ beforeAll(async () => {
 /** The scopes of the token that holds `text` on line `line` (from 0). */
 function scopesOf(source: string, line: number, text: string): string[] {
   // A language of our own, unknown to Shiki's list of bundled ones.
-  const tokens = highlighter.codeToTokensBase(source, { lang: 'phasebook-mdx' as never, theme: 'github-dark', includeExplanation: true });
+  // No time limit per line: Shiki's default, 500 ms, cut a line's tokens short on a loaded machine, where the
+  // first line also pays for compiling the grammars' expressions, and the token looked for was then missing.
+  const tokens = highlighter.codeToTokensBase(source, { lang: 'phasebook-mdx' as never, theme: 'github-dark', includeExplanation: true, tokenizeTimeLimit: 0 });
   const token = tokens[line].find((t) => t.content.includes(text));
   if (!token) throw new Error(`no token with ${text} on line ${line}: ${tokens[line].map((t) => t.content).join('|')}`);
   return token.explanation!.flatMap((e) => e.scopes.map((s) => s.scopeName));

@@ -11,7 +11,7 @@ describe('ChapterRenderer.render(text)', () => {
     expect(html).toContain('class="katex-display"');
     expect(html).toMatch(/<figure class="cell" id="cell-pendulumSimulator" data-cell="pendulumSimulator"[^>]* data-cell-spec="/);
     expect(html).not.toContain('This is an MDX comment');
-    expect([...cells.keys()]).toEqual(['pendulum', 'pendulumH', 'pendulumStart', 'pendulumModel', 'pendulumEquations', 'pendulumSimulator', 'periodCheck']);
+    expect([...cells.keys()]).toEqual(['pendulum', 'pendulumH', 'pendulumStart', 'pendulumModel', 'pendulumEquations', 'pendulumSimulator', 'periodCheck', 'myPendulum']);
     // Each cell's lines are its fences' (from 0).
     const lines = text.split('\n');
     const { line, endLine } = cells.get('pendulum')!;
