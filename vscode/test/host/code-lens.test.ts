@@ -10,7 +10,7 @@ describe('CodeLens', () => {
     const document = await vscode.workspace.openTextDocument(uri);
     const lenses = await vscode.commands.executeCommand<vscode.CodeLens[]>('vscode.executeCodeLensProvider', uri);
     const fences = document.getText().split('\n').flatMap((line, i) => (line.startsWith('```js cell') ? [i] : []));
-    expect(fences).to.have.length(7);
+    expect(fences).to.have.length(8);
     expect(lenses.map((l) => `${l.range.start.line} ${l.command?.title}`)).to.deep.equal(fences.flatMap((line) => [`${line} $(play) Run cell`, `${line} Run all`]));
     expect(lenses[0].command).to.deep.include({ command: 'phasebook.runCell' });
     expect(lenses[0].command?.arguments?.map(String)).to.deep.equal([uri.toString(), 'pendulum']);

@@ -16,7 +16,7 @@ describe('the live preview', () => {
     const report = await nextMessage(preview, 'cells', (m) => m.cells.find((c) => c.id === 'pendulumSimulator')?.state === 'fulfilled' && m.cells.every((c) => c.state !== 'pending'));
     expect(report.cells.map((c) => [c.id, c.state])).to.deep.equal([
       ['pendulum', 'fulfilled'], ['pendulumH', 'fulfilled'], ['pendulumStart', 'fulfilled'], ['pendulumModel', 'fulfilled'],
-      ['pendulumEquations', 'fulfilled'], ['pendulumSimulator', 'fulfilled'], ['periodCheck', 'fulfilled'],
+      ['pendulumEquations', 'fulfilled'], ['pendulumSimulator', 'fulfilled'], ['periodCheck', 'fulfilled'], ['myPendulum', 'fulfilled'],
     ]);
     const lines = preview.document.getText().split('\n');
     const fence = lines.indexOf('pendulumSimulator = simulator({') - 1;
