@@ -10,7 +10,8 @@ import { existsSync, mkdirSync, readFileSync, rmSync, statSync, writeFileSync } 
 import { setTimeout as sleep } from 'node:timers/promises';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { DIST } from './server.mjs';
+import { launchBrowser } from './browser.mjs';
+import { DIST, startServer } from './server.mjs';
 
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
 
@@ -83,4 +84,27 @@ async function build(log) {
   child.stderr.on('data', (chunk) => (output = (output + chunk).slice(-20_000)));
   const code = await new Promise((done) => child.on('close', done));
   if (code !== 0) throw new Error(`the build for ${BASE} failed (exit ${code}):\n${output}`);
+}
+
+/**
+ * The base-path build (made first if need be), served under its base, and a browser at 1280 × 900 to read
+ * it with; `name` labels the build's log lines.
+ */
+export async function openBaseSite(name) {
+  await ensureBaseBuild((line) => process.stderr.write(`${name}: ${line}\n`));
+  const server = await startServer(BASE_DIST, { base: BASE });
+  try {
+    const browser = await launchBrowser({ viewport: { width: 1280, height: 900 } });
+    return {
+      server,
+      browser,
+      async close() {
+        await browser.close();
+        await server.close();
+      },
+    };
+  } catch (error) {
+    await server.close();
+    throw error;
+  }
 }

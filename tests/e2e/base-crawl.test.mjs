@@ -11,25 +11,22 @@ import assert from 'node:assert/strict';
 import { readdirSync, readFileSync, statSync } from 'node:fs';
 import { join, relative, sep } from 'node:path';
 import { after, before, test } from 'node:test';
-import { cellsReady, firstViewReady, launchBrowser, watchPage } from './browser.mjs';
-import { BASE, BASE_DIST, ensureBaseBuild } from './base-build.mjs';
+import { cellsReady, firstViewReady, watchPage } from './browser.mjs';
+import { BASE, BASE_DIST, openBaseSite } from './base-build.mjs';
 import { cell, typeIntoCell } from './fixture.mjs';
 import { search } from './search-helpers.mjs';
-import { startServer } from './server.mjs';
 
-/** @type {{ origin: string, close: () => Promise<void> }} */
+/** @type {Awaited<ReturnType<typeof openBaseSite>>} */
+let site;
+/** @type {Awaited<ReturnType<typeof openBaseSite>>['server']} */
 let server;
-/** @type {Awaited<ReturnType<typeof launchBrowser>>} */
+/** @type {Awaited<ReturnType<typeof openBaseSite>>['browser']} */
 let browser;
 before(async () => {
-  await ensureBaseBuild((line) => process.stderr.write(`base-crawl.test: ${line}\n`));
-  server = await startServer(BASE_DIST, { base: BASE });
-  browser = await launchBrowser({ viewport: { width: 1280, height: 900 } });
+  site = await openBaseSite('base-crawl.test');
+  ({ server, browser } = site);
 });
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+after(() => site?.close());
 
 /** Every page of the built site: each index.html (the book's own folders, not _astro/ or pagefind/), as its path under the base. */
 function pagesUnder(dir) {

@@ -7,25 +7,22 @@
  */
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
-import { firstViewReady, launchBrowser, watchPage } from './browser.mjs';
-import { BASE, BASE_DIST, ensureBaseBuild } from './base-build.mjs';
+import { firstViewReady, watchPage } from './browser.mjs';
+import { BASE, openBaseSite } from './base-build.mjs';
 import { landedOn } from './fixture.mjs';
 import { search, shownResults } from './search-helpers.mjs';
-import { startServer } from './server.mjs';
 
-/** @type {{ origin: string, close: () => Promise<void> }} */
+/** @type {Awaited<ReturnType<typeof openBaseSite>>} */
+let site;
+/** @type {Awaited<ReturnType<typeof openBaseSite>>['server']} */
 let server;
-/** @type {Awaited<ReturnType<typeof launchBrowser>>} */
+/** @type {Awaited<ReturnType<typeof openBaseSite>>['browser']} */
 let browser;
 before(async () => {
-  await ensureBaseBuild((line) => process.stderr.write(`base-path.test: ${line}\n`));
-  server = await startServer(BASE_DIST, { base: BASE });
-  browser = await launchBrowser({ viewport: { width: 1280, height: 900 } });
+  site = await openBaseSite('base-path.test');
+  ({ server, browser } = site);
 });
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+after(() => site?.close());
 
 test('under a base path, a chapter loads whole from under it, and its navigation stays there', async () => {
   const page = await browser.context.newPage();

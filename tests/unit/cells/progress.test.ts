@@ -1,24 +1,7 @@
 import { describe, expect, test } from 'vitest';
 import { ProgressStore } from '../../../cells/progress.ts';
 import { EditStore } from '../../../cells/storage.ts';
-
-function memoryStorage(fail: 'none' | 'forbidden' | 'full' = 'none'): Storage {
-  const items = new Map<string, string>();
-  const guard = (write: boolean) => {
-    if (fail === 'forbidden') throw new DOMException('denied', 'SecurityError');
-    if (fail === 'full' && write) throw new DOMException('full', 'QuotaExceededError');
-  };
-  return {
-    get length() {
-      return items.size;
-    },
-    clear: () => items.clear(),
-    getItem: (key) => (guard(false), items.get(key) ?? null),
-    key: (index) => [...items.keys()][index] ?? null,
-    removeItem: (key) => (guard(true), void items.delete(key)),
-    setItem: (key, value) => (guard(true), void items.set(key, value)),
-  };
-}
+import { memoryStorage } from '../support/memory-storage.ts';
 
 const chapters = [
   { slug: 'introduction', page: '/course/introduction/', ids: ['a', 'b'] },

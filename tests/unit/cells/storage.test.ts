@@ -1,25 +1,7 @@
 import { describe, expect, test } from 'vitest';
 import { recoverText } from '../../../cells/recovery.ts';
 import { EditStore } from '../../../cells/storage.ts';
-
-/** An in-memory Storage; `fail` makes writes (or every call) throw as a full or forbidden localStorage does. */
-function memoryStorage(fail: 'none' | 'forbidden' | 'full' = 'none'): Storage {
-  const items = new Map<string, string>();
-  const guard = (write: boolean) => {
-    if (fail === 'forbidden') throw new DOMException('denied', 'SecurityError');
-    if (fail === 'full' && write) throw new DOMException('full', 'QuotaExceededError');
-  };
-  return {
-    get length() {
-      return items.size;
-    },
-    clear: () => items.clear(),
-    getItem: (key) => (guard(false), items.get(key) ?? null),
-    key: (index) => [...items.keys()][index] ?? null,
-    removeItem: (key) => (guard(true), void items.delete(key)),
-    setItem: (key, value) => (guard(true), void items.set(key, value)),
-  };
-}
+import { memoryStorage } from '../support/memory-storage.ts';
 
 const edit = (draft: string, ran: string | null = draft, base = 'h') => ({ draft, ran, base });
 
