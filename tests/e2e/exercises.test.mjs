@@ -16,7 +16,8 @@ import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { after, before, test } from 'node:test';
 import { launchBrowser } from './browser.mjs';
-import { cell, errorOf, firstViewReady, openSite, typeIntoCell, waitForOutput, watchPage } from './fixture.mjs';
+import { cell, errorOf, firstViewReady, openSite, waitForOutput, watchPage } from './fixture.mjs';
+import { answer, answerCode, exercise, reach, verdictAfter } from './exercise-answers.mjs';
 
 const AXE = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
 
@@ -36,46 +37,6 @@ async function open(path, context = site.context) {
   await page.goto(site.origin + path);
   await firstViewReady(page);
   return { page, ...watch };
-}
-
-const exercise = (page, id) => page.locator(`[data-exercise="${id}"]`);
-
-/** Scrolls to the exercise and waits until it is live. */
-async function reach(page, id) {
-  await exercise(page, id).scrollIntoViewIfNeeded();
-  await page.waitForSelector(`[data-exercise="${id}"][data-exercise-live] [data-exercise-feedback]`, { state: 'attached', timeout: 30_000 });
-}
-
-/** Runs `act`, then waits for the exercise's new verdict and returns its text and result. */
-async function verdictAfter(page, id, act) {
-  await exercise(page, id).evaluate((root) => delete root.dataset.exerciseResult);
-  await act();
-  await page.waitForFunction((target) => {
-    const result = document.querySelector(`[data-exercise="${target}"]`)?.getAttribute('data-exercise-result');
-    return result === 'passed' || result === 'failed' || (result === 'problem' && !/Checking/.test(document.querySelector(`[data-exercise="${target}"] [data-exercise-feedback]`)?.textContent ?? ''));
-  }, id, { timeout: 60_000 });
-  const root = exercise(page, id);
-  return { result: await root.getAttribute('data-exercise-result'), text: (await root.locator('[data-exercise-feedback]').textContent()) ?? '' };
-}
-
-/** Types a number into the exercise's labelled field and presses Enter. */
-async function answer(page, id, text) {
-  await reach(page, id);
-  return verdictAfter(page, id, async () => {
-    const field = exercise(page, id).getByLabel(/Your answer/);
-    await field.fill(text);
-    await field.press('Enter');
-  });
-}
-
-/** Writes `source` into the answer cell, runs it, and checks the code. */
-async function answerCode(page, id, cellName, source) {
-  await reach(page, id);
-  await typeIntoCell(page, cellName, source);
-  // The check reads the cell's value as it is: wait until the edit has run (its value shown, or its error).
-  const value = source.slice(source.indexOf('=') + 1).trim();
-  await waitForOutput(page, cellName, (out) => out.includes(value) || out === '', 10_000).catch(() => undefined);
-  return verdictAfter(page, id, () => exercise(page, id).getByRole('button', { name: 'Check my code' }).click());
 }
 
 /** The nonlinear oscillator's angular frequency released from rest at b, from upward zero crossings of a plain RK4 integration (step 1e-4), independent of the book's code. */
