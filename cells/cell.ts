@@ -80,6 +80,8 @@ export class LiveCell implements HeldCell {
   #running: string;
   /** The inputs of the running definition. */
   #inputs: readonly string[] = [];
+  /** The last Run's compile and define, which may still be loading the parser or the sandbox. */
+  #applying: Promise<boolean> = Promise.resolve(true);
   #editor: CellEditor | null = null;
   #editorLoading: Promise<void> | null = null;
   /** Keys typed into the static code while the editor loads, replayed into it once mounted. */
@@ -185,8 +187,10 @@ export class LiveCell implements HeldCell {
     this.#draft = source;
     this.#view.setBusy(true);
     let took: boolean;
+    const applying = this.#apply(source);
+    this.#applying = applying;
     try {
-      took = await this.#apply(source);
+      took = await applying;
     } finally {
       this.#view.setBusy(false);
     }
@@ -290,6 +294,20 @@ export class LiveCell implements HeldCell {
   /** The cell's current value: what its code last gave, or undefined while it runs or after it failed. */
   get value(): unknown {
     return this.#value;
+  }
+
+  /**
+   * Resolves once the last Run has been compiled and defined, or refused.
+   * Until then the runtime still holds the code that ran before: a reader of
+   * the cell's value (an exercise's "Check my code") waits for this first.
+   */
+  get applied(): Promise<void> {
+    return this.#applying.then(() => undefined);
+  }
+
+  /** True when the text the reader sees is not the code that runs (typed but not run, or refused by the parser). */
+  get hasUnrunEdit(): boolean {
+    return (this.#editor?.source ?? this.#draft) !== this.#running;
   }
 
   /** What the cell's code failed with, as shown under it, or null. */

@@ -34,6 +34,11 @@ export function exerciseHost(page: ExercisePage, store = new ProgressStore(), pa
       if (!cell) throw new Error(`this chapter has no cell named ${name}`);
       page.want(cell);
       await cell.start();
+      // "Check my code" checks the code the reader sees: text typed but not run is run first, and a Run still
+      // compiling (the parser and the sandbox load on a first edit) is waited for, else the old code would be graded.
+      if (cell.hasUnrunEdit) await cell.run();
+      await cell.applied;
+      if (cell.hasUnrunEdit) throw new Error('its text did not compile, so the code that runs is not what you wrote');
       // A cell being started is defined once its code is compiled: until then the runtime does not know the name.
       for (let tries = 0; ; tries++) {
         try {

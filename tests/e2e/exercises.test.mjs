@@ -16,7 +16,7 @@ import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { after, before, test } from 'node:test';
 import { launchBrowser } from './browser.mjs';
-import { cell, errorOf, firstViewReady, openSite, waitForOutput, watchPage } from './fixture.mjs';
+import { cell, errorOf, firstViewReady, openSite, typeIntoCell, waitForOutput, watchPage } from './fixture.mjs';
 import { answer, answerCode, exercise, reach, verdictAfter } from './exercise-answers.mjs';
 
 const AXE = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
@@ -112,6 +112,34 @@ test('introduction: the code exercise passes the reference H written otherwise, 
   v = await answerCode(page, 'oscillator-hamiltonian', 'myH', 'myH = "p^2/4 - 9*q^2"');
   assert.equal(v.result, 'failed');
   assert.match(v.text, /2 of 2 checks failed/);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('"Check my code" grades the code the reader sees: a Run still compiling is waited for, text not yet run is run first, and text that does not compile is said', async () => {
+  const { page, problems } = await open('/introduction/');
+  await reach(page, 'oscillator-hamiltonian');
+  const check = () => exercise(page, 'oscillator-hamiltonian').getByRole('button', { name: 'Check my code' }).click();
+  // The page's first edit: Run fetches the parser and the sandbox before the new code is defined, and Check comes at once.
+  let v = await verdictAfter(page, 'oscillator-hamiltonian', async () => {
+    await typeIntoCell(page, 'myH', 'myH = "p^2/4 + 9*q^2"');
+    await check();
+  });
+  assert.equal(v.result, 'passed', v.text);
+  // Typed, not run: the check runs it, and the cell then holds it.
+  v = await verdictAfter(page, 'oscillator-hamiltonian', async () => {
+    await typeIntoCell(page, 'myH', 'myH = "p^2/2 + 9*q^2/2"', { run: 'none' });
+    await check();
+  });
+  assert.equal(v.result, 'failed', v.text);
+  await waitForOutput(page, 'myH', (out) => out.includes('p^2/2 + 9*q^2/2'), 10_000);
+  // Text that does not compile: the old code still runs, and the check says it is not grading it.
+  v = await verdictAfter(page, 'oscillator-hamiltonian', async () => {
+    await typeIntoCell(page, 'myH', 'myH = "p^2/4 + 9*q^2', { run: 'none' });
+    await check();
+  });
+  assert.equal(v.result, 'problem');
+  assert.match(v.text, /did not compile/);
   assert.deepEqual(problems, []);
   await page.close();
 });

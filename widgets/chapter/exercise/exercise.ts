@@ -192,7 +192,7 @@ function codeAnswer(code: CodeAnswer, host: ExerciseHost, report: (v: Verdict[],
     }
   };
   return element('div', { className: 'exercise-answer' },
-    element('p', {}, 'Write your answer in the cell ', link, ' (run it), then check it.'),
+    element('p', {}, 'Write your answer in the cell ', link, ', then check it (the check runs it first).'),
     button('Check my code', () => void run()));
 }
 
