@@ -46,14 +46,22 @@ export function chapterProblems(file: string, cells: readonly ReportedCell[], ou
   });
 }
 
-/** The problems of every chapter compiled so far, by file: a chapter compiled again replaces its own. */
+/**
+ * The problems of every chapter compiled so far, by what reported them and the file: a chapter
+ * compiled again replaces its own. Its cells (remark-cells.mjs) and its exercises
+ * (remark-exercises.mjs) report apart, so that one clearing its problems does not clear the other's.
+ */
 const problemsByFile = new Map<string, readonly string[]>();
 const listeners = new Set<(file: string, problems: readonly string[]) => void>();
 
+/** What reports a chapter's problems. */
+export type Reporter = 'cells' | 'exercises';
+
 /** Records a chapter's problems (none clears it), and tells whoever listens. */
-export function reportChapter(file: string, problems: readonly string[]): void {
-  if (problems.length) problemsByFile.set(file, problems);
-  else problemsByFile.delete(file);
+export function reportChapter(file: string, problems: readonly string[], reporter: Reporter = 'cells'): void {
+  const key = `${reporter} ${file}`;
+  if (problems.length) problemsByFile.set(key, problems);
+  else problemsByFile.delete(key);
   for (const listener of listeners) listener(file, problems);
 }
 

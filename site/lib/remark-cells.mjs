@@ -245,7 +245,7 @@ function pageDataNode(data) {
  * A chapter's path as the build's report names it: from the project's root when it is inside.
  * @param {string} path
  */
-function shownPath(path) {
+export function shownPath(path) {
   // No node:path here: the VS Code extension bundles this module for the browser (vscode/build/book-modules.ts).
   const root = `${process.cwd().replace(/[\\/]+$/, '')}/`;
   return path.replace(/\\/g, '/').startsWith(root.replace(/\\/g, '/')) ? path.slice(root.length) : path;

@@ -7,8 +7,9 @@
  * mistakes, hints, worked solution, reference code) are rendered the same
  * way and then sealed (seal.ts), so the page's text does not give them
  * away; the exercise widget (exercise.ts) unseals them in the browser. A
- * declaration that does not parse renders its error in the page and warns
- * in the build, as a cell's syntax error does.
+ * declaration that does not parse, repeats an id, or names a truth that
+ * gives no number renders its error in the page and fails the build, as a
+ * failing cell does (cell-failures.ts, fail-loudly.mjs).
  *
  * Emitted markup (the contract the widget, the progress page and the e2e
  * tests rely on):
@@ -23,7 +24,9 @@
  */
 import katex from 'katex';
 import { fromHtmlIsomorphic } from 'hast-util-from-html-isomorphic';
-import { KIND_NAMES, parseExercise, publicPart, seal, sealedPart } from '../../widgets/index.ts';
+import { computeTruth, KIND_NAMES, parseExercise, publicPart, seal, sealedPart } from '../../widgets/index.ts';
+import { reportChapter } from './cell-failures.ts';
+import { shownPath } from './remark-cells.mjs';
 
 /** @param {string} text */
 function escapeHtml(text) {
@@ -90,23 +93,44 @@ export function remarkExercises() {
   return (tree, file) => {
     /** @type {Set<string>} */
     const ids = new Set();
+    const chapter = file.path ? shownPath(file.path) : '(chapter)';
+    /** @type {string[]} */
+    const problems = [];
     eachExerciseFence(tree, (node, parent, index) => {
       const parsed = parseExercise(node.value);
+      const problem = 'error' in parsed ? parsed.error
+        : ids.has(parsed.exercise.id) ? `the id ${parsed.exercise.id} is used twice in this chapter: progress is kept by id`
+        : truthProblem(parsed.exercise);
+      // Every id read counts, even one whose exercise has another problem: progress is kept by id.
+      if (!('error' in parsed)) ids.add(parsed.exercise.id);
       let element;
-      if ('error' in parsed) {
-        file.message(`exercise: ${parsed.error}`, node);
-        element = renderError(parsed.error);
-      } else if (ids.has(parsed.exercise.id)) {
-        file.message(`exercise: the id ${parsed.exercise.id} is used twice in this chapter`, node);
-        element = renderError(`the id ${parsed.exercise.id} is used twice in this chapter: progress is kept by id`);
+      if (problem) {
+        file.message(`exercise: ${problem}`, node);
+        problems.push(`${chapter}:${node.position?.start.line ?? 0}: exercise${'error' in parsed ? '' : ` ${parsed.exercise.id}`}: ${problem}`);
+        element = renderError(problem);
       } else {
-        ids.add(parsed.exercise.id);
-        element = renderExercise(parsed.exercise);
+        element = renderExercise(/** @type {{ exercise: import('../../widgets/index.ts').Exercise }} */ (parsed).exercise);
       }
       parent.children[index] = /** @type {import('mdast').RootContent} */ (/** @type {unknown} */ ({
         type: 'exercise',
         data: { hName: element.tagName, hProperties: element.properties, hChildren: element.children },
       }));
     });
+    // An exercise that cannot be read or graded would fail every reader: the build fails (fail-loudly.mjs).
+    reportChapter(chapter, problems, 'exercises');
   };
+}
+
+/**
+ * Why a number exercise could not be graded: its truth is unknown, lacks an
+ * argument, or gives no number for the arguments declared; null when it grades.
+ * @param {import('../../widgets/index.ts').Exercise} exercise
+ * @returns {string | null}
+ */
+function truthProblem(exercise) {
+  if (!exercise.answer) return null;
+  const { name, args } = exercise.answer.truth;
+  const truth = computeTruth(name, args);
+  if ('error' in truth) return truth.error;
+  return Number.isFinite(truth.value) ? null : `the truth ${name} gives no number for ${JSON.stringify(args)}`;
 }
