@@ -2,11 +2,12 @@
  * /kepler/: the period measured in the page against Kepler's third law and
  * the conservation of L and of the direction of the Laplace–Runge–Lenz
  * vector, with the orbit's elements computed here from the initial state;
- * the live readouts; an edit of k.
+ * the live readouts; an edit of k; the chapter's exercises, answered.
  */
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { assertAgrees, assertDrawn, assertLoadsClean, assertNoCellErrors, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
+import { answer, answerCode } from './exercise-answers.mjs';
 import { typeIntoCell } from './fixture.mjs';
 // The orbit's elements (Landau & Lifshitz §15), written out once for the e2e suite.
 import { keplerElements as elements } from './sweep-physics.mjs';
@@ -83,5 +84,46 @@ test('editing k re-runs the checks, which still agree (k = 400)', async () => {
   const orbit = await assertChecks(400);
   assert.ok(Math.abs(orbit.T - 4.5708) < 1e-4);
   await assertNoCellErrors(page);
+  assert.deepEqual(problems, []);
+});
+
+test('the exercises: right answers pass, plausible wrong ones fail and say why', async () => {
+  // Kepler's third law from the orbit's elements at k = 400 (Landau & Lifshitz §15).
+  assert.equal((await answer(page, 'period-at-k-400', elements(INITIAL, 400).T.toFixed(4))).result, 'passed');
+  let v = await answer(page, 'period-at-k-400', '2.9395');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /the period at k = 500/);
+  v = await answer(page, 'period-at-k-400', String(elements(INITIAL, 500).T * Math.sqrt(500 / 400)));
+  assert.match(v.text, /the orbit grows too/);
+
+  // |A| = μke, from A = p × L − μk r/r at the start (Goldstein §3.9).
+  const { e } = elements(INITIAL, 500);
+  assert.equal((await answer(page, 'lenz-length', String(0.25 * 500 * e))).result, 'passed');
+  v = await answer(page, 'lenz-length', '232');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /One sign is flipped/);
+  v = await answer(page, 'lenz-length', '145.5');
+  assert.match(v.text, /reduced mass μ = 1\/4/);
+
+  // E = p²/2μ − k/r = 0 with p² = 13, μ = 1/4, r = 6√2 (Landau & Lifshitz §15).
+  const unbinding = (13 / (2 * 0.25)) * 6 * Math.SQRT2;
+  assert.equal((await answer(page, 'unbinding-strength', unbinding.toFixed(1))).result, 'passed');
+  v = await answer(page, 'unbinding-strength', String(unbinding / 2));
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /That is half of it/);
+  v = await answer(page, 'unbinding-strength', String(2 * unbinding));
+  assert.match(v.text, /balances a circular orbit/);
+
+  // The relative motion's H, p²/2μ − k/r with μ = 1/4, written otherwise and plus a constant.
+  v = await answerCode(page, 'relative-hamiltonian', 'relativeH', 'relativeH = "2*p1^2 + 2*p0^2 - k/sqrt(q1^2 + q0^2) + 3"');
+  assert.equal(v.result, 'passed', v.text);
+  v = await answerCode(page, 'relative-hamiltonian', 'relativeH', 'relativeH = "p0^2 + p1^2 - k/sqrt(q0^2 + q1^2)"');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /2 of 2 checks failed/);
+  assert.match(v.text, /Hamilton’s equations differ at \(q0, q1, p0, p1\)/);
+  assert.match(v.text, /not back where it began/);
+  v = await answerCode(page, 'relative-hamiltonian', 'relativeH', 'relativeH = "2*(p0^2 + p1^2) + k/sqrt(q0^2 + q1^2)"');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /Hamilton’s equations differ/);
   assert.deepEqual(problems, []);
 });

@@ -1,11 +1,13 @@
 /**
  * /parametric-resonance/: the growth rate measured in the page against the
  * first-order formula and against a Floquet multiplier this test computes
- * itself; the stability chart, whose click sets γ and u in its simulator.
+ * itself; the stability chart, whose click sets γ and u in its simulator;
+ * the chapter's exercises, answered.
  */
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { assertAgrees, assertDrawn, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
+import { answer, answerCode } from './exercise-answers.mjs';
 import { cell, typeIntoCell } from './fixture.mjs';
 
 const WIDGETS = '[data-widget]';
@@ -18,10 +20,10 @@ function firstOrder({ u, gamma, omega }) {
 }
 
 /**
- * The Floquet growth rate of q̈ + ω²(1 + u cos γt) q = 0, computed here independently of the
- * page: the monodromy matrix from the classical Runge–Kutta method, s = ln|λ_max|/T.
+ * The trace of the monodromy matrix of q̈ + ω²(1 + u cos γt) q = 0 over one drive period,
+ * computed here independently of the page, by the classical Runge–Kutta method.
  */
-function floquetGrowth({ u, gamma, omega }, steps = 4000) {
+function monodromyTrace({ u, gamma, omega }, steps = 4000) {
   const T = (2 * Math.PI) / gamma;
   const h = T / steps;
   const rate = (t, q, p) => [p, -omega * omega * (1 + u * Math.cos(gamma * t)) * q];
@@ -37,10 +39,17 @@ function floquetGrowth({ u, gamma, omega }, steps = 4000) {
     }
     return [q, p];
   };
-  const trace = advance([1, 0])[0] + advance([0, 1])[1];
-  const half = Math.abs(trace) / 2;
-  return half > 1 ? Math.log(half + Math.sqrt(half * half - 1)) / T : 0;
+  return advance([1, 0])[0] + advance([0, 1])[1];
 }
+
+/** The larger Floquet multiplier, a root of λ² − (tr M)λ + 1 = 0 (det M = 1); 1 when stable. */
+function floquetMultiplier(params) {
+  const half = monodromyTrace(params) / 2;
+  return Math.abs(half) > 1 ? half + Math.sign(half) * Math.sqrt(half * half - 1) : 1;
+}
+
+/** The Floquet growth rate s = ln|λ_max|/T. */
+const floquetGrowth = (params) => (Math.log(Math.abs(floquetMultiplier(params))) * params.gamma) / (2 * Math.PI);
 
 /** @type {import('playwright-core').Page} */
 let page;
@@ -136,5 +145,44 @@ test('editing u re-runs both checks, which still agree', async () => {
   );
   assertChecks(await theoryChecks(page), params);
   await widgetsReady(page);
+  assert.deepEqual(problems, []);
+});
+
+test('the exercises: right answers pass, plausible wrong ones fail and say why', async () => {
+  // The growth rate from this file's own RK4 monodromy matrix.
+  assert.equal((await answer(page, 'growth-at-u-04', floquetGrowth({ u: 0.4, gamma: 21.3, omega: 10 }).toFixed(4))).result, 'passed');
+  // The first-order formula, rightly applied, is within its stated error (Landau & Lifshitz §27).
+  assert.equal((await answer(page, 'growth-at-u-04', String(firstOrder({ u: 0.4, gamma: 21.3, omega: 10 })))).result, 'passed');
+  let v = await answer(page, 'growth-at-u-04', '1');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /the rate at the band’s centre/);
+  v = await answer(page, 'growth-at-u-04', String(2 * firstOrder({ u: 0.4, gamma: 21.3, omega: 10 })));
+  assert.match(v.text, /leaves out the ½/);
+
+  const lambda = floquetMultiplier({ u: 0.3, gamma: 20, omega: 10 });
+  assert.equal((await answer(page, 'multiplier-at-centre', lambda.toFixed(4))).result, 'passed');
+  v = await answer(page, 'multiplier-at-centre', (-lambda).toFixed(4));
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /the sign is not/);
+  v = await answer(page, 'multiplier-at-centre', (1 / lambda).toFixed(4));
+  assert.match(v.text, /the other multiplier, 1\/λ/);
+
+  // The upper edge to second order, 2ω + uω/2 − u²ω/32 (Landau & Lifshitz §27, problem 1), within ±0.01 of the true edge.
+  assert.equal((await answer(page, 'tongue-edge-at-u-03', String(20 + 1.5 - (0.09 * 10) / 32))).result, 'passed');
+  v = await answer(page, 'tongue-edge-at-u-03', '21.5');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /the first-order edge/);
+  v = await answer(page, 'tongue-edge-at-u-03', '18.47');
+  assert.match(v.text, /That is the lower edge/);
+
+  // The slow equations' H, written otherwise: ȧ = ∂H/∂b, ḃ = −∂H/∂a.
+  v = await answerCode(page, 'slow-hamiltonian', 'slowH', 'slowH = "-(epsilon + u*omega/2)*p^2/4 - (epsilon - u*omega/2)*q^2/4"');
+  assert.equal(v.result, 'passed', v.text);
+  for (const wrong of ['(epsilon/2 + u*omega/4)*p^2/2 + (epsilon/2 - u*omega/4)*q^2/2', '-(epsilon/2 - u*omega/4)*p^2/2 - (epsilon/2 + u*omega/4)*q^2/2']) {
+    v = await answerCode(page, 'slow-hamiltonian', 'slowH', `slowH = "${wrong}"`);
+    assert.equal(v.result, 'failed');
+    assert.match(v.text, /1 of 2 checks failed/);
+    assert.match(v.text, /Failed: Hamilton’s equations differ at \(q, p\)/);
+  }
   assert.deepEqual(problems, []);
 });

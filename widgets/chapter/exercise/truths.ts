@@ -6,12 +6,16 @@
  * kept by subject in truths/, one module each.
  */
 import type { Truth } from './truth.ts';
+import { KEPLER_TRUTHS } from './truths/kepler.ts';
 import { OSCILLATOR_TRUTHS } from './truths/oscillators.ts';
+import { PARAMETRIC_TRUTHS } from './truths/parametric.ts';
 
 export type { Truth } from './truth.ts';
 
 export const TRUTHS: Readonly<Record<string, Truth>> = {
   ...OSCILLATOR_TRUTHS,
+  ...PARAMETRIC_TRUTHS,
+  ...KEPLER_TRUTHS,
 };
 
 /** The truth's value for a declaration, or an error message naming what is wrong with it. */
