@@ -7,11 +7,17 @@
  */
 import type { Truth } from './truth.ts';
 import { OSCILLATOR_TRUTHS } from './truths/oscillators.ts';
+import { ADIABATIC_TRUTHS } from './truths/adiabatic.ts';
+import { SCATTERING_TRUTHS } from './truths/scattering.ts';
+import { RELATIVITY_TRUTHS } from './truths/relativity.ts';
 
 export type { Truth } from './truth.ts';
 
 export const TRUTHS: Readonly<Record<string, Truth>> = {
   ...OSCILLATOR_TRUTHS,
+  ...ADIABATIC_TRUTHS,
+  ...SCATTERING_TRUTHS,
+  ...RELATIVITY_TRUTHS,
 };
 
 /** The truth's value for a declaration, or an error message naming what is wrong with it. */
