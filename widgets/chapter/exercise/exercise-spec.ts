@@ -141,7 +141,7 @@ function parseCheck(value: unknown): CodeCheck {
     return { check: 'returns', initial: value.initial as number[], period: value.period, dt: value.dt as number | undefined, tolerance: value.tolerance as number | undefined };
   }
   if (value.check === 'equationsInTime') {
-    const { box } = parseCheck({ check: 'equations', box: value.box }) as { box: [number, number][] };
+    const { box } = parseCheck({ check: 'equations', box: value.box }) as { readonly box: readonly (readonly [number, number])[] };
     const time = value.time;
     if (!Array.isArray(time) || time.length !== 2 || !time.every(isNumber) || !(time[0] < time[1])) {
       throw new Error('an "equationsInTime" check needs "time": the [earliest, latest] t to compare the equations at');
