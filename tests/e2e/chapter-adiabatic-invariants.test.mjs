@@ -7,6 +7,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { assertAgrees, assertDrawn, chartIn, resetCell, theoryCheckIn, useChapter, widgetsReady } from './chapter-checks.mjs';
+import { answer, answerCode } from './exercise-answers.mjs';
 import { typeIntoCell } from './fixture.mjs';
 
 /** @type {import('playwright-core').Page} */
@@ -111,4 +112,39 @@ test('editing the ramp rate re-runs the first check, which still agrees', async 
   await widgetsReady(page, EXPECTED);
   assert.deepEqual(problems, []);
   await resetCell(page, 'params');
+});
+
+test('the exercises, answered in the page: right answers computed here pass, plausible wrong ones fail and say why', async () => {
+  // I = E/ω is the adiabatic invariant (Landau & Lifshitz §49): E₀ = 8 at ω = 4 becomes 8 · 7/4 at ω = 7.
+  let v = await answer(page, 'energy-after-ramp', String((8 * 7) / 4));
+  assert.equal(v.result, 'passed', v.text);
+  v = await answer(page, 'energy-after-ramp', '8');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /energy is not conserved/);
+  v = await answer(page, 'energy-after-ramp', String((8 * 49) / 16));
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /keeps the amplitude of q/);
+  // The sudden limit: q and p do not move, so at p = 0 the action goes as H/ω = ωq²/2, by ω₁/ω₀ (Landau & Lifshitz §49–50).
+  assert.equal((await answer(page, 'jump-at-turning-point', String(8 / 4))).result, 'passed');
+  v = await answer(page, 'jump-at-turning-point', '1');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /adiabatic invariant, kept under a slow change/);
+  v = await answer(page, 'jump-at-turning-point', String((8 / 4) ** 2));
+  assert.match(v.text, /ratio of the energies/);
+  // Parametric resonance is strongest at twice the frequency, γ = 2ω₀ (Landau & Lifshitz §27).
+  assert.equal((await answer(page, 'fastest-modulation', String(2 * 4))).result, 'passed');
+  v = await answer(page, 'fastest-modulation', '4');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /second, narrower resonance/);
+  v = await answer(page, 'fastest-modulation', (8 / (2 * Math.PI)).toFixed(4));
+  assert.match(v.text, /cycles per unit time/);
+  // ω(t) = 6 − t/20, the same ramp written otherwise, passes; a frozen frequency and a rising one fail.
+  v = await answerCode(page, 'falling-frequency', 'myRamp', 'myRamp = "(6 - t/20)^2*q^2/2 + p^2/2"');
+  assert.equal(v.result, 'passed', v.text);
+  v = await answerCode(page, 'falling-frequency', 'myRamp', 'myRamp = "p^2/2 + 18*q^2"');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /Hamilton’s equations differ at t = [\d.]+, \(q, p\)/);
+  v = await answerCode(page, 'falling-frequency', 'myRamp', 'myRamp = "p^2/2 + (6 + 0.05*t)^2*q^2/2"');
+  assert.equal(v.result, 'failed');
+  assert.deepEqual(problems, []);
 });

@@ -8,6 +8,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { assertAgrees, chartIn, drawnPixels, resetCell, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
+import { answer, answerCode } from './exercise-answers.mjs';
 import { typeIntoCell } from './fixture.mjs';
 
 /** @type {import('playwright-core').Page} */
@@ -107,4 +108,43 @@ test('editing the field strength re-runs both checks, which still agree', async 
   await widgetsReady(page, EXPECTED);
   assert.deepEqual(problems, []);
   await resetCell(page, 'params');
+});
+
+test('the exercises, answered in the page: right answers computed here pass, plausible wrong ones fail and say why', async () => {
+  // Rutherford, tan(θ/2) = α/2Eb with E = p₀²/2m = 16 (Landau & Lifshitz §19).
+  let v = await answer(page, 'rutherford-angle', String(2 * Math.atan(30 / (2 * 16 * 1.5))));
+  assert.equal(v.result, 'passed', v.text);
+  v = await answer(page, 'rutherford-angle', String(Math.atan(30 / (2 * 16 * 1.5))));
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /That is θ\/2/);
+  v = await answer(page, 'rutherford-angle', String((2 * Math.atan(30 / 48) * 180) / Math.PI));
+  assert.match(v.text, /in degrees/);
+  // Head-on, the particle stops where α/r = E = p₀²/2m + α/|x₀| (energy conservation, Landau & Lifshitz §18).
+  assert.equal((await answer(page, 'slower-beam-turning-point', String(-30 / (9 + 30 / 20)))).result, 'passed');
+  v = await answer(page, 'slower-beam-turning-point', String(-30 / 9));
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /already holds at x₀ = −20/);
+  v = await answer(page, 'slower-beam-turning-point', String(30 / 10.5));
+  assert.match(v.text, /x is negative/);
+  // The right angle on the exact orbit from x₀ = −20 (exactDeflection above), by bisection here.
+  let [low, high] = [0.1, 5];
+  for (let k = 0; k < 60; k++) {
+    const mid = (low + high) / 2;
+    [low, high] = exactDeflection(-20, mid, 4, 0, 30, 0.5) > Math.PI / 2 ? [mid, high] : [low, mid];
+  }
+  assert.equal((await answer(page, 'right-angle-impact', low.toFixed(4))).result, 'passed');
+  v = await answer(page, 'right-angle-impact', String(30 / 32));
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /Rutherford’s α\/2E₀, for a particle from infinity/);
+  v = await answer(page, 'right-angle-impact', String(30 / 16));
+  assert.match(v.text, /That is α\/E₀/);
+  // H = |p|²/2m + α/r with m = 2, α = 10, written otherwise, passes; the paper's mass and an attracting centre fail.
+  v = await answerCode(page, 'heavier-particle-hamiltonian', 'myBeamH', 'myBeamH = "10/sqrt(q1^2 + q0^2) + p0^2/4 + p1^2/4"');
+  assert.equal(v.result, 'passed', v.text);
+  v = await answerCode(page, 'heavier-particle-hamiltonian', 'myBeamH', 'myBeamH = "p0^2 + p1^2 + 10/sqrt(q0^2 + q1^2)"');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /Hamilton’s equations differ at \(q0, q1, p0, p1\)/);
+  v = await answerCode(page, 'heavier-particle-hamiltonian', 'myBeamH', 'myBeamH = "(p0^2 + p1^2)/4 - 10/sqrt(q0^2 + q1^2)"');
+  assert.equal(v.result, 'failed');
+  assert.deepEqual(problems, []);
 });

@@ -7,6 +7,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { assertAgrees, assertDrawn, chartIn, assertLoadsClean, assertNoCellErrors, theoryChecks, useChapter, widgetsReady } from './chapter-checks.mjs';
+import { answer, answerCode } from './exercise-answers.mjs';
 import { typeIntoCell } from './fixture.mjs';
 
 const [Q0, P0] = [-10, -10];
@@ -87,5 +88,42 @@ test('editing the force re-runs the checks, which still agree (F = 2)', async ()
   await widgetsReady(page);
   await assertChecks(params);
   await assertNoCellErrors(page);
+  assert.deepEqual(problems, []);
+});
+
+test('the exercises, answered in the page: right answers computed here pass, plausible wrong ones fail and say why', async () => {
+  const m = Math.sqrt(10);
+  // Energy conservation, √(p² + m²) − Fq constant (Landau & Lifshitz, Fields §20), at p = 0: q = q₀ + (m − √(p₀² + m²))/F.
+  let v = await answer(page, 'turning-point-stronger-force', String(Q0 + (m - Math.hypot(P0, m)) / 2));
+  assert.equal(v.result, 'passed', v.text);
+  v = await answer(page, 'turning-point-stronger-force', String(Q0 - P0 ** 2 / (2 * m * 2)));
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /That is Newton’s particle/);
+  v = await answer(page, 'turning-point-stronger-force', String(Q0 - (m - Math.hypot(P0, m)) / 2));
+  assert.match(v.text, /to the left of the start/);
+  // The same, read backwards: √(p₀² + m²) = m + F · 10, against the force.
+  assert.equal((await answer(page, 'start-to-turn-at-minus-20', String(-Math.sqrt((m + 0.8 * 10) ** 2 - m * m)))).result, 'passed');
+  v = await answer(page, 'start-to-turn-at-minus-20', String(-Math.sqrt(2 * m * 0.8 * 10)));
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /That is Newton’s particle/);
+  v = await answer(page, 'start-to-turn-at-minus-20', String(-Math.sqrt((10 + 8) ** 2 - 100)));
+  assert.match(v.text, /m² = 10, so m = √10/);
+  // v = p/√(p² + m²) at |p| = m (Landau & Lifshitz, Fields §9).
+  assert.equal((await answer(page, 'speed-when-newton-reaches-c', String(m / Math.hypot(m, m)))).result, 'passed');
+  v = await answer(page, 'speed-when-newton-reaches-c', '1');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /always below 1/);
+  v = await answer(page, 'speed-when-newton-reaches-c', '0.5');
+  assert.match(v.text, /√2·m, not 2m/);
+  // H = √(p² + 1) + q²/2 written otherwise passes; Newton's spring and a wrong sign fail both checks.
+  v = await answerCode(page, 'relativistic-spring', 'mySpringH', 'mySpringH = "q^2/2 + sqrt(1 + p^2)"');
+  assert.equal(v.result, 'passed', v.text);
+  assert.match(v.text, /All 2 checks passed/);
+  v = await answerCode(page, 'relativistic-spring', 'mySpringH', 'mySpringH = "p^2/2 + q^2/2"');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /2 of 2 checks failed/);
+  assert.match(v.text, /not back where it began/);
+  v = await answerCode(page, 'relativistic-spring', 'mySpringH', 'mySpringH = "sqrt(p^2 + 1) - q^2/2"');
+  assert.equal(v.result, 'failed');
   assert.deepEqual(problems, []);
 });

@@ -7,7 +7,10 @@
  *   reference's at random states drawn in a box (so H may differ by a
  *   constant, or be written any way at all);
  * - `returns`: released from a state, the reader's system comes back to it
- *   after the period the physics demands (the motion, not its formula).
+ *   after the period the physics demands (the motion, not its formula);
+ * - `equationsInTime`: as `equations`, at random times in a range as well,
+ *   for an H that depends on t (a ramp, a modulation), which the equations
+ *   at t = 0 alone cannot tell from its frozen value.
  */
 import type { Model } from '../../../core/index.ts';
 import type { CodeCheck } from './exercise-spec.ts';
@@ -40,17 +43,21 @@ export const STATES = 8;
  */
 export const EQUATIONS_TOLERANCE = 1e-6;
 
-export function equationsCheck(reader: Model, reference: Model, box: readonly (readonly [number, number])[], seed = 1): Verdict {
+export function equationsCheck(reader: Model, reference: Model, box: readonly (readonly [number, number])[], seed = 1, time: readonly [number, number] = [0, 0]): Verdict {
   const draw = uniform(seed);
+  const [early, late] = time;
+  // A time is drawn only for a range, so a check at t = 0 meets the same states as ever.
+  const when = () => (late > early ? early + (late - early) * draw() : early);
   const x = new Float64Array(reference.dim);
   const mine = new Float64Array(reference.dim);
   const theirs = new Float64Array(reference.dim);
   const rate = reference.names.map((n) => `${n}̇`);
   let worst = 0;
   for (let k = 0; k < STATES; k++) {
+    const t = when();
     box.forEach(([low, high], i) => (x[i] = low + (high - low) * draw()));
-    reader.field(0, x, mine);
-    reference.field(0, x, theirs);
+    reader.field(t, x, mine);
+    reference.field(t, x, theirs);
     const scale = Math.max(1, ...Array.from(theirs, Math.abs));
     for (let i = 0; i < reference.dim; i++) {
       const gap = Math.abs(mine[i] - theirs[i]) / scale;
@@ -58,13 +65,14 @@ export function equationsCheck(reader: Model, reference: Model, box: readonly (r
         const wrong = rate[i];
         return {
           passed: false,
-          message: `Hamilton’s equations differ at ${state(reference.names, x)}: your H gives ${wrong} = ${short(mine[i])}, where the right one is ${short(theirs[i])}.`,
+          message: `Hamilton’s equations differ at ${late > early ? `t = ${short(t)}, ` : ''}${state(reference.names, x)}: your H gives ${wrong} = ${short(mine[i])}, where the right one is ${short(theirs[i])}.`,
         };
       }
       worst = Math.max(worst, gap);
     }
   }
-  return { passed: true, message: `Hamilton’s equations of your H equal the reference’s at ${STATES} random states (largest relative difference ${worst.toExponential(1)}).` };
+  const times = late > early ? ` and times ${short(early)} ≤ t ≤ ${short(late)}` : '';
+  return { passed: true, message: `Hamilton’s equations of your H equal the reference’s at ${STATES} random states${times} (largest relative difference ${worst.toExponential(1)}).` };
 }
 
 /**
@@ -89,5 +97,6 @@ export function returnsCheck(reader: Model, initial: readonly number[], period: 
 /** Runs one declared check. */
 export function runCheck(check: CodeCheck, reader: Model, reference: Model, seed = 1): Verdict {
   if (reader.dim !== reference.dim) return { passed: false, message: `Your H has ${reader.dof} degree${reader.dof > 1 ? 's' : ''} of freedom; the exercise asks for ${reference.dof}.` };
+  if (check.check === 'equationsInTime') return equationsCheck(reader, reference, check.box, seed, check.time);
   return check.check === 'equations' ? equationsCheck(reader, reference, check.box, seed) : returnsCheck(reader, check.initial, check.period, check.dt, check.tolerance);
 }

@@ -48,7 +48,8 @@ export interface NumberAnswer {
 
 export type CodeCheck =
   | { readonly check: 'equations'; readonly box: readonly (readonly [number, number])[] }
-  | { readonly check: 'returns'; readonly initial: readonly number[]; readonly period: number; readonly dt?: number; readonly tolerance?: number };
+  | { readonly check: 'returns'; readonly initial: readonly number[]; readonly period: number; readonly dt?: number; readonly tolerance?: number }
+  | { readonly check: 'equationsInTime'; readonly box: readonly (readonly [number, number])[]; readonly time: readonly [number, number] };
 
 export interface CodeAnswer {
   /** The name of the cell the reader edits: its value is their H (a math expression or a JS function). */
@@ -139,7 +140,15 @@ function parseCheck(value: unknown): CodeCheck {
     if (value.tolerance !== undefined && !(isNumber(value.tolerance) && value.tolerance > 0)) throw new Error('a "returns" check’s "tolerance" must be a positive number');
     return { check: 'returns', initial: value.initial as number[], period: value.period, dt: value.dt as number | undefined, tolerance: value.tolerance as number | undefined };
   }
-  throw new Error(`unknown check ${JSON.stringify(value.check)}: use "equations" or "returns"`);
+  if (value.check === 'equationsInTime') {
+    const { box } = parseCheck({ check: 'equations', box: value.box }) as { readonly box: readonly (readonly [number, number])[] };
+    const time = value.time;
+    if (!Array.isArray(time) || time.length !== 2 || !time.every(isNumber) || !(time[0] < time[1])) {
+      throw new Error('an "equationsInTime" check needs "time": the [earliest, latest] t to compare the equations at');
+    }
+    return { check: 'equationsInTime', box, time: [time[0], time[1]] };
+  }
+  throw new Error(`unknown check ${JSON.stringify(value.check)}: use "equations", "equationsInTime" or "returns"`);
 }
 
 function parseCode(value: unknown): CodeAnswer {
@@ -151,7 +160,7 @@ function parseCode(value: unknown): CodeAnswer {
   if (!Array.isArray(mistakes) || !mistakes.every(isText)) throw new Error('code.mistakes must be a list of H’s');
   const checks = value.checks.map(parseCheck);
   for (const c of checks) {
-    const size = c.check === 'equations' ? c.box.length : c.initial.length;
+    const size = c.check === 'returns' ? c.initial.length : c.box.length;
     if (size !== 2 * (dof as number)) throw new Error(`a "${c.check}" check must give ${2 * (dof as number)} components, one per q and p`);
   }
   return { cell: value.cell, dof: dof as number, params: numbers(value.params, 'code.params'), reference: value.reference, checks, mistakes: mistakes as string[] };

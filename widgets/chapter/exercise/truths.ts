@@ -9,6 +9,9 @@ import type { Truth } from './truth.ts';
 import { KEPLER_TRUTHS } from './truths/kepler.ts';
 import { OSCILLATOR_TRUTHS } from './truths/oscillators.ts';
 import { PARAMETRIC_TRUTHS } from './truths/parametric.ts';
+import { ADIABATIC_TRUTHS } from './truths/adiabatic.ts';
+import { SCATTERING_TRUTHS } from './truths/scattering.ts';
+import { RELATIVITY_TRUTHS } from './truths/relativity.ts';
 
 export type { Truth } from './truth.ts';
 
@@ -16,6 +19,9 @@ export const TRUTHS: Readonly<Record<string, Truth>> = {
   ...OSCILLATOR_TRUTHS,
   ...PARAMETRIC_TRUTHS,
   ...KEPLER_TRUTHS,
+  ...ADIABATIC_TRUTHS,
+  ...SCATTERING_TRUTHS,
+  ...RELATIVITY_TRUTHS,
 };
 
 /** The truth's value for a declaration, or an error message naming what is wrong with it. */

@@ -43,3 +43,23 @@ test('a reader H with the wrong number of degrees of freedom is told so', async 
   expect(verdict.passed).toBe(false);
   expect(verdict.message).toContain('degrees of freedom');
 });
+
+describe('equationsInTime', () => {
+  // ω(t) = 6 − 0.05t: the frozen H and the ramp of ω² instead of ω agree with it at t = 0 and nowhere later.
+  const ramp = 'p^2/2 + (6 - 0.05*t)^2*q^2/2';
+  const check = { check: 'equationsInTime', box: [...box], time: [0, 60] } as const;
+  test('the same time-dependent H written otherwise passes, naming the times', async () => {
+    const verdict = runCheck(check, await model('p^2/2 + (36 - 0.6*t + 0.0025*t^2)*q^2/2 + t'), await model(ramp));
+    expect(verdict).toMatchObject({ passed: true });
+    expect(verdict.message).toContain('times 0 ≤ t ≤ 60');
+  });
+  test('an H right at t = 0 but wrong later fails, naming the time, which the check at t = 0 alone misses', async () => {
+    const reference = await model(ramp);
+    for (const wrong of ['p^2/2 + 18*q^2', 'p^2/2 + (36 - 0.05*t)*q^2/2']) {
+      expect(runCheck({ check: 'equations', box: [...box] }, await model(wrong), reference).passed).toBe(true);
+      const verdict = runCheck(check, await model(wrong), reference);
+      expect(verdict.passed).toBe(false);
+      expect(verdict.message).toMatch(/differ at t = [\d.]+, \(q, p\) = /);
+    }
+  });
+});

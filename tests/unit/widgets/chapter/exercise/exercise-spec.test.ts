@@ -25,6 +25,8 @@ describe('parseExercise', () => {
     ['no source', JSON.stringify({ ...predict, source: '' }), /"source"/],
     ['an unjustified tolerance', JSON.stringify({ ...predict, answer: { ...predict.answer, tolerance: { relative: 0.1 } } }), /why/],
     ['a code exercise without checks', JSON.stringify({ ...predict, kind: 'code', answer: undefined, code: { cell: 'h', reference: 'p^2/2', checks: [] } }), /at least one check/],
+    ['an equationsInTime check without its times', JSON.stringify({ ...predict, kind: 'code', answer: undefined, code: { cell: 'h', reference: 'p^2/2', checks: [{ check: 'equationsInTime', box: [[0, 1], [0, 1]], time: [5, 1] }] } }), /"time"/],
+    ['an equationsInTime check of the wrong size', JSON.stringify({ ...predict, kind: 'code', answer: undefined, code: { cell: 'h', reference: 'p^2/2', checks: [{ check: 'equationsInTime', box: [[0, 1]], time: [0, 1] }] } }), /2 components/],
     ['a check of the wrong size', JSON.stringify({ ...predict, kind: 'code', answer: undefined, code: { cell: 'h', reference: 'p^2/2', checks: [{ check: 'equations', box: [[0, 1]] }] } }), /2 components/],
   ])('%s is refused with a message naming it', (_, text, message) => {
     const parsed = parseExercise(text);
