@@ -6,12 +6,16 @@
  * kept by subject in truths/, one module each.
  */
 import type { Truth } from './truth.ts';
+import { CHAOS_TRUTHS } from './truths/chaos.ts';
+import { INTEGRATOR_TRUTHS } from './truths/integrators.ts';
 import { OSCILLATOR_TRUTHS } from './truths/oscillators.ts';
 
 export type { Truth } from './truth.ts';
 
 export const TRUTHS: Readonly<Record<string, Truth>> = {
   ...OSCILLATOR_TRUTHS,
+  ...INTEGRATOR_TRUTHS,
+  ...CHAOS_TRUTHS,
 };
 
 /** The truth's value for a declaration, or an error message naming what is wrong with it. */
