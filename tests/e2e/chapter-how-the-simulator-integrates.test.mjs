@@ -13,6 +13,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { assertAgrees, assertLoadsClean, assertNoNaNShown, chartIn, editAndReadChecks, theoryChecks, useChapter } from './chapter-checks.mjs';
+import { answer, answerCode } from './exercise-answers.mjs';
 
 const COMPARISON = '[data-widget="method-comparison"]';
 const ENERGY = 'Relative energy error against time';
@@ -131,5 +132,62 @@ test('an H that does not separate: Verlet and Yoshida cannot run and their check
   const energy = await chartIn(page, ENERGY);
   assert.deepEqual(energy.series.map((s) => s.label), ['RK 3/8', 'implicit midpoint', 'Dormand–Prince']);
   await assertNoNaNShown(page);
+  assert.deepEqual(problems, []);
+});
+
+/** Largest |H − H₀|/H₀ of a plain kick–drift–kick loop on p²/2 + ω²q²/2 from (1, 0), written here; Infinity once it overflows. */
+function leapfrogEnergyError(omega, h, steps) {
+  let [q, p, worst] = [1, 0, 0];
+  for (let n = 0; n < steps; n++) {
+    p -= (h / 2) * omega * omega * q;
+    q += h * p;
+    p -= (h / 2) * omega * omega * q;
+    const error = Math.abs((p * p + omega * omega * q * q) / (omega * omega) - 1);
+    if (!Number.isFinite(error)) return Infinity;
+    worst = Math.max(worst, error);
+  }
+  return worst;
+}
+
+test('the exercises, answered in the page: right answers from independent sources pass, plausible wrong ones fail and say why', async () => {
+  // Σbᵢcᵢ⁴ of the 3/8 rule is Simpson's 3/8 quadrature of x⁴ on [0, 1]: 1/5 plus its error (3/80)h⁵·4! with h = 1/3 (Abramowitz & Stegun 25.4.13).
+  assert.equal((await answer(page, 'order-five-moment', (1 / 5 + (3 / 80) * (1 / 3) ** 5 * 24).toFixed(4))).result, 'passed');
+  let v = await answer(page, 'order-five-moment', '0.2');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /what order 5 would need/);
+  v = await answer(page, 'order-five-moment', '0.0787');
+  assert.match(v.text, /leaves out the last stage/);
+
+  // Verlet's band on the oscillator ω = 2 at h = 0.1, measured by this file's own leapfrog loop.
+  assert.equal((await answer(page, 'verlet-energy-band', leapfrogEnergyError(2, 0.1, 20_000).toPrecision(4))).result, 'passed');
+  v = await answer(page, 'verlet-energy-band', '0.0025');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /for ω = 1/);
+  v = await answer(page, 'verlet-energy-band', '0.02');
+  assert.match(v.text, /H only falls/);
+
+  // The stability limit at ω = 1.25, bracketed by the same loop: bounded below it, overflowing above it.
+  let [stable, unstable] = [1, 2];
+  while (unstable - stable > 1e-3) {
+    const mid = (stable + unstable) / 2;
+    if (leapfrogEnergyError(1.25, mid, 5_000) < 1e3) stable = mid;
+    else unstable = mid;
+  }
+  assert.equal((await answer(page, 'verlet-stable-step', stable.toFixed(3))).result, 'passed');
+  v = await answer(page, 'verlet-stable-step', '2');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /divided by ω = 1\.25/);
+  v = await answer(page, 'verlet-stable-step', '2.263');
+  assert.match(v.text, /four-stage Runge–Kutta/);
+
+  // H + h²H₂ from the symmetric BCH formula (Hairer, Lubich & Wanner §III.4), written otherwise: terms reordered, a constant added.
+  v = await answerCode(page, 'pendulum-modified-hamiltonian', 'myModifiedH', 'myModifiedH = "h^2*omega^2*cos(q)*p^2/12 - h^2*omega^4*sin(q)^2/24 + p^2/2 - omega^2*cos(q) + 1"');
+  assert.equal(v.result, 'passed', v.text);
+  v = await answerCode(page, 'pendulum-modified-hamiltonian', 'myModifiedH', 'myModifiedH = "p^2/2 - omega^2*cos(q)"');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /Hamilton’s equations differ at \(q, p\)/);
+  v = await answerCode(page, 'pendulum-modified-hamiltonian', 'myModifiedH', 'myModifiedH = "p^2/2 - omega^2*cos(q) - h^2*(omega^2*cos(q)*p^2/12 - omega^4*sin(q)^2/24)"');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /Hamilton’s equations differ/);
   assert.deepEqual(problems, []);
 });

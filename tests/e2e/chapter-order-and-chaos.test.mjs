@@ -17,6 +17,7 @@ import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { assertAgrees, assertDrawn, assertLoadsClean, assertNoNaNShown, assertSumOfTerms, editAndReadChecks, resetCell, theoryChecks, useChapter } from './chapter-checks.mjs';
 import { errorOf, typeIntoCell } from './fixture.mjs';
+import { answer, answerCode } from './exercise-answers.mjs';
 
 const SECTION = '[data-widget="poincare-section"][data-system="henon-heiles"]';
 const KEPLER = '[data-widget="poincare-section"][data-system="anisotropic-kepler"]';
@@ -216,5 +217,62 @@ test('the other isotropic factor makes the paper’s orbit a collision orbit: th
   await resetCell(page, 'factor');
   await keplerSectionFor(1.5);
   await assertNoNaNShown(page);
+  assert.deepEqual(problems, []);
+});
+
+/** The root of `f` between `low` and `high` (f changing sign there), by bisection. */
+function bisect(f, low, high) {
+  for (let i = 0; i < 60; i++) {
+    const mid = (low + high) / 2;
+    if (Math.sign(f(mid)) === Math.sign(f(low))) low = mid;
+    else high = mid;
+  }
+  return (low + high) / 2;
+}
+
+test('the exercises, answered in the page: right answers from independent sources pass, plausible wrong ones fail and say why', async () => {
+  // The section's edge at E = 1/12: the largest x on y = 0 where Hénon & Heiles's H (1964), all momenta zero, reaches E.
+  const henonHeiles = (x, y) => (x * x + y * y) / 2 + x * x * y - y ** 3 / 3;
+  assert.equal((await answer(page, 'section-radius', bisect((x) => henonHeiles(x, 0) - 1 / 12, 0, 1).toFixed(4))).result, 'passed');
+  let v = await answer(page, 'section-radius', '0.2887');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /both carry a factor ½/);
+  v = await answer(page, 'section-radius', '0.1667');
+  assert.match(v.text, /the bound on x²/);
+
+  // The relative motion's coefficient along u = c·x1 − x2 of Σp² is |∇u|² = c² + 1, along v = y1 − y2 it is 2:
+  // Devaney's μ = 9/8 (Invent. Math. 45, 1978) for c > 1, and isotropy, μ = 1, for c < 0.
+  const ratio = (c) => (c * c + 1) / 2;
+  assert.equal((await answer(page, 'devaney-factor', bisect((c) => ratio(c) - 9 / 8, 1, 2).toFixed(4))).result, 'passed');
+  v = await answer(page, 'devaney-factor', '1.125');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /That is μ itself/);
+  v = await answer(page, 'devaney-factor', '0.8819');
+  assert.match(v.text, /v is the heavy direction/);
+  assert.equal((await answer(page, 'isotropic-factor', bisect((c) => ratio(c) - 1, -2, 0).toFixed(3))).result, 'passed');
+  v = await answer(page, 'isotropic-factor', '1');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /the ordinary two-body problem/);
+  v = await answer(page, 'isotropic-factor', '0.6667');
+  assert.match(v.text, /does not balance the masses/);
+
+  // A circular orbit of H = 2p² − 1/r at E = −1/2: radius R = k/(2|E|) = 1, speed from mv²/R = k/R² with m = 1/4, T = 2πR/v.
+  const [m, R] = [1 / 4, 1];
+  assert.equal((await answer(page, 'isotropic-kepler-period', ((2 * Math.PI * R) / Math.sqrt(1 / (m * R))).toFixed(4))).result, 'passed');
+  v = await answer(page, 'isotropic-kepler-period', '6.2832');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /the mass is not 1/);
+  v = await answer(page, 'isotropic-kepler-period', '8.8858');
+  assert.match(v.text, /semi-major axis/);
+
+  // At c = 2, w = x1 + 2x2 is orthogonal to u, and p_x1² + p_x2² = 5(p_u² + p_w²): written otherwise, reordered.
+  v = await answerCode(page, 'relative-hamiltonian', 'myRelativeH', 'myRelativeH = "2*p1^2 - k/sqrt(q1^2 + q0^2) + 5*p0^2"');
+  assert.equal(v.result, 'passed', v.text);
+  v = await answerCode(page, 'relative-hamiltonian', 'myRelativeH', 'myRelativeH = "3.25*p0^2 + 2*p1^2 - k/sqrt(q0^2 + q1^2)"');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /Hamilton’s equations differ at \(q0, q1, p0, p1\)/);
+  v = await answerCode(page, 'relative-hamiltonian', 'myRelativeH', 'myRelativeH = "2*p0^2 + 5*p1^2 - k/sqrt(q0^2 + q1^2)"');
+  assert.equal(v.result, 'failed');
+  assert.match(v.text, /Hamilton’s equations differ/);
   assert.deepEqual(problems, []);
 });

@@ -7,6 +7,8 @@
  */
 import type { Truth } from './truth.ts';
 import { KEPLER_TRUTHS } from './truths/kepler.ts';
+import { CHAOS_TRUTHS } from './truths/chaos.ts';
+import { INTEGRATOR_TRUTHS } from './truths/integrators.ts';
 import { OSCILLATOR_TRUTHS } from './truths/oscillators.ts';
 import { PARAMETRIC_TRUTHS } from './truths/parametric.ts';
 import { ADIABATIC_TRUTHS } from './truths/adiabatic.ts';
@@ -22,6 +24,8 @@ export const TRUTHS: Readonly<Record<string, Truth>> = {
   ...ADIABATIC_TRUTHS,
   ...SCATTERING_TRUTHS,
   ...RELATIVITY_TRUTHS,
+  ...INTEGRATOR_TRUTHS,
+  ...CHAOS_TRUTHS,
 };
 
 /** The truth's value for a declaration, or an error message naming what is wrong with it. */
