@@ -32,7 +32,7 @@ import { answer, exercise } from './exercise-answers.mjs';
 
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
 const require = createRequire(import.meta.url);
-const SCORM_AGAIN = require.resolve('scorm-again/dist/scorm12.min.js');
+const SCORM_AGAIN = require.resolve('scorm-again/scorm12/min');
 const CHAPTERS = ['introduction', 'nonlinear-oscillator'];
 /** Where the LMS unpacks the introduction: deep, and named like nothing in the book. */
 const SCO = '/lms/course-7/sco-3/';
@@ -42,7 +42,7 @@ const siteDir = process.env.PHASEBOOK_SCORM_SITE_DIR ?? (process.env.PHASEBOOK_O
 
 /** The host page of the test LMS: scorm-again's API as window.API, a transcript of every call the SCO makes, the SCO in an iframe. */
 const HOST = `<!doctype html>
-<html lang="en"><head><meta charset="utf-8"><title>Test LMS</title>
+<html lang="en"><head><meta charset="utf-8"><title>Test LMS</title><link rel="icon" href="data:,">
 <script src="scorm12.min.js"></script>
 <script>
   window.transcript = [];
@@ -54,7 +54,7 @@ const HOST = `<!doctype html>
 
 /** A host whose LMS refuses every value: the SCO must say so once, politely, and go on working. */
 const REFUSING_HOST = `<!doctype html>
-<html lang="en"><head><meta charset="utf-8"><title>Refusing LMS</title>
+<html lang="en"><head><meta charset="utf-8"><title>Refusing LMS</title><link rel="icon" href="data:,">
 <script>
   window.calls = 0;
   window.API = {
