@@ -21,6 +21,7 @@ import assert from 'node:assert/strict';
 import { execFile } from 'node:child_process';
 import { mkdtemp, mkdir, readFile, rm, writeFile } from 'node:fs/promises';
 import { createRequire } from 'node:module';
+import { readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -33,6 +34,7 @@ import { answer, exercise } from './exercise-answers.mjs';
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
 const require = createRequire(import.meta.url);
 const SCORM_AGAIN = require.resolve('scorm-again/scorm12/min');
+const AXE = readFileSync(require.resolve('axe-core/axe.min.js'), 'utf8');
 const CHAPTERS = ['introduction', 'nonlinear-oscillator'];
 /** Where the LMS unpacks the introduction: deep, and named like nothing in the book. */
 const SCO = '/lms/course-7/sco-3/';
@@ -107,6 +109,13 @@ after(async () => {
   await server?.close();
   if (scratch) await rm(scratch, { recursive: true, force: true });
 });
+
+/** What axe finds wrong in a page or frame, one line per rule. */
+async function axeViolations(target) {
+  await target.evaluate(AXE);
+  return target.evaluate(async () =>
+    (await window.axe.run(document, { resultTypes: ['violations'] })).violations.map((v) => `${v.id} (${v.nodes.length}): ${v.nodes[0]?.target.join(' ')}`));
+}
 
 /** The manifest read by the browser's XML parser: its parse error if any, and what SCORM 1.2 asks of it. */
 async function readManifest(xml) {
@@ -230,6 +239,7 @@ test('an LMS that refuses values is told of once, politely, in the page, and the
     assert.equal(await notes.count(), 1, 'said once, however many calls were refused');
     assert.match(await notes.textContent(), /error 351: Not implemented here.*not lost/);
     assert.ok(await page.evaluate(() => window.calls) > 3);
+    assert.deepEqual(await axeViolations(frame), [], 'the chapter with its note passes axe');
     assert.deepEqual(watch.problems, []);
   } finally {
     await page.close();
@@ -246,6 +256,7 @@ test('the launch page opened on its own, with no LMS, grades an exercise and say
     assert.equal(drive.result, 'passed', drive.text);
     assert.equal(await exercise(page, 'drive-line').getAttribute('data-exercise-state'), 'solved');
     assert.equal(await page.locator('[data-scorm-note]').count(), 0);
+    assert.deepEqual(await axeViolations(page), [], 'the packaged page (no search box, links to other pages kept as text) passes axe at 1280 px');
     assert.deepEqual(watch.problems, []);
   } finally {
     await page.close();
