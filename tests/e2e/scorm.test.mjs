@@ -193,9 +193,6 @@ test('inside a test LMS under /lms/course-7/sco-3/, two solved exercises reach t
       status: window.API.cmi.core.lesson_status,
       transcript: window.transcript,
     }));
-    console.log(`The LMS received (${exercises} exercises in the chapter):`);
-    for (const call of lms.transcript) console.log(`  ${call[0]}(${call.slice(1).map((v) => JSON.stringify(v)).join(', ')})`);
-    console.log(`  cmi.core.score.raw = ${lms.raw}, score.min = ${lms.min}, score.max = ${lms.max}, lesson_status = ${lms.status}`);
     assert.equal(lms.raw, expected, `2 of ${exercises} solved`);
     assert.equal(lms.min, '0');
     assert.equal(lms.max, '100');
@@ -211,6 +208,9 @@ test('inside a test LMS under /lms/course-7/sco-3/, two solved exercises reach t
     // Leaving the chapter finishes the session.
     await page.evaluate(() => document.querySelector('iframe').remove());
     await page.waitForFunction(() => window.transcript.some(([name]) => name === 'LMSFinish'), null, { timeout: 30_000 });
+    console.log(`The LMS received (${exercises} exercises in the chapter):`);
+    for (const call of await page.evaluate(() => window.transcript)) console.log(`  ${call[0]}(${call.slice(1).map((v) => `'${v}'`).join(', ')})`);
+    console.log(`  cmi.core.score.raw = ${lms.raw}, score.min = ${lms.min}, score.max = ${lms.max}, lesson_status = ${lms.status} (before LMSFinish)`);
 
     const outside = watch.requests.filter((url) => {
       const { origin, pathname } = new URL(url);
