@@ -8,7 +8,7 @@
 import { type ExerciseHost, loadExerciseWidget } from '../widgets/index.ts';
 import type { LiveCell } from './cell.ts';
 import { loadFailure } from './load-failure.ts';
-import { ProgressStore, type WriteResult } from './progress.ts';
+import { EXERCISE_RESULT_EVENT, type ExerciseResult, ProgressStore, type WriteResult } from './progress.ts';
 import type { Notebook } from './runtime.ts';
 
 export interface ExercisePage {
@@ -69,7 +69,12 @@ export function exerciseHost(page: ExercisePage, store = new ProgressStore(), pa
     },
     model: page.model,
     load: (id) => store.load(path, id),
-    attempt: (id, passed, answer) => problem(store.attempt(path, id, passed, answer).write),
+    attempt: (id, passed, answer) => {
+      const { record, write } = store.attempt(path, id, passed, answer);
+      const detail: ExerciseResult = { id, passed, solved: record.status === 'solved' };
+      document.dispatchEvent(new CustomEvent(EXERCISE_RESULT_EVENT, { detail }));
+      return problem(write);
+    },
     solutionShown: (id) => problem(store.solutionShown(path, id).write),
   };
 }

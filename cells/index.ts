@@ -12,4 +12,4 @@ export { BROWSER_GLOBALS, JAVASCRIPT_GLOBALS, mathByName, standardValues } from 
 export { runHeadless, type HeadlessCell } from './headless.ts';
 export { currentCellSignal, Notebook, type CellVariable } from './runtime.ts';
 export { describeCell, formatError, type CellSpec, type ParsedCell } from './spec.ts';
-export { type ChapterExercises, type ExerciseRecord, ProgressStore } from './progress.ts';
+export { type ChapterExercises, EXERCISE_RESULT_EVENT, type ExerciseRecord, type ExerciseResult, ProgressStore } from './progress.ts';

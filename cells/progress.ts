@@ -34,6 +34,24 @@ export interface ChapterExercises {
 
 export const PROGRESS_FORMAT = 'phasebook-progress';
 
+/**
+ * The hook for whoever follows the reader's results on a page (the SCORM
+ * adapter of a packaged chapter, site/scorm/): after every check of an
+ * exercise, `document` receives a CustomEvent of this type whose `detail`
+ * is an {@link ExerciseResult}. It is sent whether or not storage kept the
+ * result, and nothing in the book itself listens to it.
+ */
+export const EXERCISE_RESULT_EVENT = 'phasebook:exercise-result';
+
+export interface ExerciseResult {
+  /** The exercise's id, as its declaration names it. */
+  readonly id: string;
+  /** Whether this check passed. */
+  readonly passed: boolean;
+  /** Whether the exercise counts as solved now: this check or an earlier one passed. */
+  readonly solved: boolean;
+}
+
 export type WriteResult = { readonly ok: true } | { readonly ok: false; readonly reason: 'unavailable' | 'full' };
 
 export function isExerciseRecord(value: unknown): value is ExerciseRecord {
