@@ -71,6 +71,8 @@ const GROUPS = [
   [/^cells\/added-cells\.ts$/, 'added-cells'],
   [/^core\/(?:(?:model|tables|dataset)\/)?(?!index\.ts)[^/]+$|^widgets\/chapter\/models\/cell-simulation\.ts/, 'core'],
   [/^widgets\/chapter\/(chart|table|theory-check|stability-chart|poincare-section|method-comparison)\//, (m) => m[1]],
+  // The exercise widget, its truths and its checks: loaded when an exercise comes near, never with the boot chunk.
+  [/^widgets\/chapter\/exercise\//, 'exercise'],
   [/^widgets\/chapter\/models\/compile-client/, 'compile-client'],
   [/^widgets\/chapter\/math\//, 'tex'],
 ];
