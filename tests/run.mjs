@@ -38,6 +38,10 @@ const STAGES = [
   { name: 'build', command: ['astro', 'build'], about: 'the site, into dist/' },
   { name: 'e2e', command: ['npm', 'run', '--silent', 'test:e2e'], needs: ['build'], about: 'end-to-end tests in headless Chromium against dist/' },
   { name: 'typecheck', command: ['tsc', '--noEmit'], background: true, about: 'the type check' },
+  // The site built again under a base path, for the e2e files that serve it there (tests/e2e/base-build.mjs), made
+  // here beside the e2e lane instead of inside it, where two files would wait on it for a minute; at the usual
+  // priority, since those files wait for it. It does not need the site's build: it is the same sources built again.
+  { name: 'build:base', command: ['node', 'tests/e2e/base-build.mjs'], after: ['typecheck'], about: 'the site under the base path /phasebook/, beside dist/' },
   { name: 'unit', command: ['vitest', 'run'], after: ['typecheck'], background: true, about: 'the unit tests (vitest)' },
   { name: 'vscode:setup', command: ['npm', 'run', '--silent', 'setup:vscode'], about: "the extension's own dependencies (npm install in vscode/)" },
   { name: 'vscode:unit', command: ['npm', 'run', '--silent', 'test:vscode:unit'], needs: ['vscode:setup'], after: ['unit'], background: true, about: "the extension's build, type check and unit tests" },

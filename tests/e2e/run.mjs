@@ -1,0 +1,76 @@
+#!/usr/bin/env node
+/**
+ * `npm run test:e2e`: every e2e file against the built site, four at a time (each file its own server and
+ * browser), the longest first, then a table of each file's wall time, longest first.
+ *
+ *   node tests/e2e/run.mjs                     every file
+ *   node tests/e2e/run.mjs lazy every-page     only the files whose names contain one of these
+ *
+ * `node --test` starts the files of a folder in the order of their names, so a long file whose name comes
+ * late started last and alone set the suite's end: in the last quiet run the phone sweep, started halfway,
+ * ran on for minutes after the other slots had emptied. Started first, the long files run beside the many
+ * short ones, which fill the other slots around them. LONGEST is an order, not a measure: a file missing
+ * from it runs after them, and a name in it that matches no file is refused, so that the list cannot rot
+ * silently. The table at the end is what to update it from.
+ */
+import { readdirSync } from 'node:fs';
+import { join } from 'node:path';
+import { run } from 'node:test';
+import { spec } from 'node:test/reporters';
+import { fileURLToPath } from 'node:url';
+
+const HERE = fileURLToPath(new URL('.', import.meta.url));
+
+/** The files that take longest (wall time, from the table this prints), in that order. */
+const LONGEST = [
+  'every-page-phone',
+  'every-page-desk',
+  'base-crawl',
+  'phone-layout',
+  'book-pdf',
+  'math-fonts',
+  'build',
+  'base-path',
+  'dev-server',
+  'interactions',
+  'check-sweeps',
+  'plots-read',
+];
+
+/** The same limit node --test was given: a guard against a hang, not a measure of speed. */
+const TIMEOUT_MS = 900_000;
+const CONCURRENCY = 4;
+
+const every = readdirSync(HERE).filter((name) => name.endsWith('.test.mjs')).sort();
+const stem = (name) => name.replace(/\.test\.mjs$/, '');
+const unknown = LONGEST.filter((name) => !every.some((file) => stem(file) === name));
+if (unknown.length) {
+  console.error(`tests/e2e/run.mjs: LONGEST names no file ${unknown.join(', ')}`);
+  process.exit(2);
+}
+const rank = (file) => {
+  const i = LONGEST.indexOf(stem(file));
+  return i === -1 ? LONGEST.length : i;
+};
+const wanted = process.argv.slice(2);
+const files = every.filter((file) => !wanted.length || wanted.some((w) => file.includes(w))).sort((a, b) => rank(a) - rank(b) || a.localeCompare(b));
+if (!files.length) {
+  console.error(`tests/e2e/run.mjs: no e2e file matches ${wanted.join(', ')}`);
+  process.exit(2);
+}
+
+/** @type {Map<string, number>} each file's wall time, ms, as node:test measured it from its start */
+const wall = new Map();
+const stream = run({ files: files.map((file) => join(HERE, file)), concurrency: CONCURRENCY, timeout: TIMEOUT_MS });
+stream.on('test:fail', () => (process.exitCode = 1));
+stream.on('test:complete', (event) => {
+  if (event.nesting === 0 && event.name === event.file) wall.set(event.file, event.details.duration_ms);
+});
+const reported = stream.compose(new spec());
+reported.pipe(process.stdout, { end: false });
+reported.on('end', () => {
+  const rows = [...wall].sort((a, b) => b[1] - a[1]);
+  const clock = (ms) => `${Math.floor(ms / 60_000)}:${String(Math.floor((ms % 60_000) / 1000)).padStart(2, '0')}`;
+  console.log(`\nwall time of each file (${CONCURRENCY} at a time, the longest first):`);
+  for (const [file, ms] of rows) console.log(`  ${clock(ms).padStart(5)}  ${stem(file.slice(HERE.length))}`);
+});
