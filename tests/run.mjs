@@ -11,8 +11,9 @@
  * Stages run side by side where that shortens the wall time on two cores
  * without one starving another: the site's build, then the end-to-end
  * tests (browsers mostly waiting on pages), in one lane; the type check,
- * the unit tests and the VS Code extension's tests in the other, at a lower
- * priority, taking what the first lane leaves idle. A stage
+ * then the base-path build the e2e lane will serve, the unit tests and the
+ * VS Code extension's tests beside one another in the other, the unit tests
+ * at a lower priority, taking what the first lane leaves idle. A stage
  * that needs another's result (e2e needs the build) is not run when that one
  * failed, and is reported as blocked. Each stage's output is printed whole
  * when it ends, so that two stages' lines never interleave, and is kept in
@@ -44,8 +45,11 @@ const STAGES = [
   { name: 'build:base', command: ['node', 'tests/e2e/base-build.mjs'], after: ['typecheck'], about: 'the site under the base path /phasebook/, beside dist/' },
   { name: 'unit', command: ['vitest', 'run'], after: ['typecheck'], background: true, about: 'the unit tests (vitest)' },
   { name: 'vscode:setup', command: ['npm', 'run', '--silent', 'setup:vscode'], about: "the extension's own dependencies (npm install in vscode/)" },
-  { name: 'vscode:unit', command: ['npm', 'run', '--silent', 'test:vscode:unit'], needs: ['vscode:setup'], after: ['unit'], background: true, about: "the extension's build, type check and unit tests" },
-  { name: 'vscode:host', command: ['npm', 'run', '--silent', 'test:vscode:host'], needs: ['vscode:setup'], after: ['vscode:unit'], about: "the extension's suite in a VS Code web build" },
+  // The extension's host suite mostly waits (on VS Code's web build and its browser), so it runs beside the unit
+  // tests rather than after them; its unit tests follow it, not beside it, since both write the extension's
+  // catalogue (vscode/build/build.ts), and run beside the book's unit tests.
+  { name: 'vscode:host', command: ['npm', 'run', '--silent', 'test:vscode:host'], needs: ['vscode:setup'], after: ['typecheck'], about: "the extension's suite in a VS Code web build" },
+  { name: 'vscode:unit', command: ['npm', 'run', '--silent', 'test:vscode:unit'], needs: ['vscode:setup'], after: ['vscode:host'], background: true, about: "the extension's build, type check and unit tests" },
 ];
 
 const args = process.argv.slice(2);
