@@ -41,8 +41,10 @@ const STAGES = [
   { name: 'typecheck', command: ['tsc', '--noEmit'], background: true, about: 'the type check' },
   // The site built again under a base path, for the e2e files that serve it there (tests/e2e/base-build.mjs), made
   // here beside the e2e lane instead of inside it, where two files would wait on it for a minute; at the usual
-  // priority, since those files wait for it. It does not need the site's build: it is the same sources built again.
-  { name: 'build:base', command: ['node', 'tests/e2e/base-build.mjs'], after: ['typecheck'], about: 'the site under the base path /phasebook/, beside dist/' },
+  // priority, since those files wait for it. After the site's build, not beside it: Astro renders the pages of a
+  // build whose output is outside the project (PHASEBOOK_OUT_DIR=/tmp/…) from a bundle in the project's .astro/,
+  // which two such builds at once would share.
+  { name: 'build:base', command: ['node', 'tests/e2e/base-build.mjs'], after: ['build'], about: 'the site under the base path /phasebook/, beside dist/' },
   { name: 'unit', command: ['vitest', 'run'], after: ['typecheck'], background: true, about: 'the unit tests (vitest)' },
   { name: 'vscode:setup', command: ['npm', 'run', '--silent', 'setup:vscode'], about: "the extension's own dependencies (npm install in vscode/)" },
   // The extension's host suite mostly waits (on VS Code's web build and its browser), so it runs beside the unit
