@@ -1,7 +1,8 @@
 #!/usr/bin/env node
 /**
  * `npm run test:e2e`: every e2e file against the built site, four at a time (each file its own server and
- * browser), the longest first, then a table of each file's wall time, longest first.
+ * browser), the longest first, then a table of each file's wall time and processor time (its browser's
+ * included, sampled: tests/process-cpu.mjs), longest first.
  *
  *   node tests/e2e/run.mjs                     every file
  *   node tests/e2e/run.mjs lazy every-page     only the files whose names contain one of these
@@ -18,6 +19,7 @@ import { join } from 'node:path';
 import { run } from 'node:test';
 import { spec } from 'node:test/reporters';
 import { fileURLToPath } from 'node:url';
+import { watchProcessCpu } from '../process-cpu.mjs';
 
 const HERE = fileURLToPath(new URL('.', import.meta.url));
 
@@ -69,6 +71,7 @@ if (!files.length) {
 
 /** @type {Map<string, number>} each file's wall time, ms, as node:test measured it from its start */
 const wall = new Map();
+const cpu = watchProcessCpu(process.pid, { labelOf: (command) => command.match(/tests\/e2e\/([\w.-]+)\.test\.mjs/)?.[1], fallback: 'the runner' });
 const stream = run({ files: files.map((file) => join(HERE, file)), concurrency: CONCURRENCY, timeout: TIMEOUT_MS });
 stream.on('test:fail', () => (process.exitCode = 1));
 stream.on('test:complete', (event) => {
@@ -77,8 +80,16 @@ stream.on('test:complete', (event) => {
 const reported = stream.compose(new spec());
 reported.pipe(process.stdout, { end: false });
 reported.on('end', () => {
+  const seconds = cpu.stop();
   const rows = [...wall].sort((a, b) => b[1] - a[1]);
   const clock = (ms) => `${Math.floor(ms / 60_000)}:${String(Math.floor((ms % 60_000) / 1000)).padStart(2, '0')}`;
-  console.log(`\nwall time of each file (${CONCURRENCY} at a time, the longest first):`);
-  for (const [file, ms] of rows) console.log(`  ${clock(ms).padStart(5)}  ${stem(file.slice(HERE.length))}`);
+  const cpuOf = (name) => (seconds.has(name) ? clock(1000 * seconds.get(name)) : '—');
+  console.log(`\neach file's wall time and processor time, its browser's included (${CONCURRENCY} files at a time, the longest first):`);
+  console.log('   wall    cpu  file');
+  for (const [file, ms] of rows) {
+    const name = stem(file.slice(HERE.length));
+    console.log(`  ${clock(ms).padStart(5)}  ${cpuOf(name).padStart(5)}  ${name}`);
+  }
+  const total = [...seconds.values()].reduce((sum, s) => sum + s, 0);
+  console.log(`  total processor time ${clock(1000 * total)}, of which the runner's own ${cpuOf('the runner')}`);
 });
