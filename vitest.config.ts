@@ -1,3 +1,4 @@
+import { availableParallelism } from 'node:os';
 import { defineConfig } from 'vitest/config';
 
 /**
@@ -15,5 +16,9 @@ export default defineConfig({
     // as loaded, and more.
     testTimeout: 120_000,
     hookTimeout: 120_000,
+    // Two test files at a time at least. Vitest's default, one fewer than the cores, is one on a two-core machine,
+    // where many files spend their time waiting on the CLI in a child process (and, in npm test, on the cores the
+    // browsers hold): the second file fills that wait.
+    maxWorkers: Math.max(2, availableParallelism() - 1),
   },
 });

@@ -3,15 +3,22 @@
  * as a GitHub project site is built: the e2e tests of the book under a sub-path
  * serve it there. It is built beside the site under test (PHASEBOOK_OUT_DIR +
  * `-base`, or build/site-base/), or taken from PHASEBOOK_BASE_OUT_DIR, and
- * built again whenever the site under test is newer.
+ * built again whenever it is not the build of the sources as they are now
+ * (its fingerprint, site/lib/build-fingerprint.mjs).
+ *
+ * `node tests/e2e/base-build.mjs` makes it ahead of the tests: `npm test`
+ * (tests/run.mjs) runs that as a stage of its own beside the site's build,
+ * so that the files that serve it find it made, or wait on its lock, instead
+ * of building it inside the end-to-end lane.
  */
 import { spawn } from 'node:child_process';
-import { existsSync, mkdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { setTimeout as sleep } from 'node:timers/promises';
 import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+import { isUpToDate } from '../../site/lib/build-fingerprint.mjs';
 import { launchBrowser } from './browser.mjs';
-import { DIST, startServer } from './server.mjs';
+import { startServer } from './server.mjs';
 
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
 
@@ -20,10 +27,14 @@ export const BASE = '/phasebook/';
 export const BASE_DIST =
   process.env.PHASEBOOK_BASE_OUT_DIR ?? (process.env.PHASEBOOK_OUT_DIR ? `${process.env.PHASEBOOK_OUT_DIR.replace(/\/+$/, '')}-base` : join(ROOT, 'build', 'site-base'));
 
-const builtAt = (dir) => (existsSync(join(dir, 'index.html')) ? statSync(join(dir, 'index.html')).mtimeMs : -Infinity);
+/**
+ * Whether the base-path build there is the build of the sources as they are now. By content, not by time:
+ * made beside the site under test, it may end before that build does, and is no less current for it.
+ */
+const isCurrent = () => isUpToDate(ROOT, BASE_DIST, { base: BASE });
 
 /**
- * Builds the base-path site unless one at least as new as the site under test is there. Test files run
+ * Builds the base-path site unless the build of the sources as they are now is there. Test files run
  * in processes of their own, and two of them building into one folder at once break each other's build:
  * the first to make the lock folder builds, the others wait for it to go and then find the build done.
  * A lock whose process has died is taken over.
@@ -31,12 +42,12 @@ const builtAt = (dir) => (existsSync(join(dir, 'index.html')) ? statSync(join(di
 export async function ensureBaseBuild(log = () => {}) {
   const lock = `${BASE_DIST.replace(/\/+$/, '')}.lock`;
   for (;;) {
-    if (builtAt(BASE_DIST) >= builtAt(DIST)) return;
+    if (await isCurrent()) return;
     if (takeLock(lock)) break;
-    await sleep(500);
+    await lockReleased(lock);
   }
   try {
-    if (builtAt(BASE_DIST) >= builtAt(DIST)) return;
+    if (await isCurrent()) return;
     await build(log);
   } finally {
     rmSync(lock, { recursive: true, force: true });
@@ -61,6 +72,20 @@ function takeLock(lock) {
   if (alive(holder)) return false;
   rmSync(lock, { recursive: true, force: true });
   return takeLock(lock);
+}
+
+/** Waits until the lock folder is gone or its process has died: the sources are hashed again only then, not at every look. */
+async function lockReleased(lock) {
+  for (;;) {
+    let holder = NaN;
+    try {
+      holder = Number(readFileSync(join(lock, 'pid'), 'utf8'));
+    } catch (error) {
+      if (error.code === 'ENOENT' && !existsSync(lock)) return;
+    }
+    if (Number.isFinite(holder) && !alive(holder)) return;
+    await sleep(500);
+  }
 }
 
 function alive(pid) {
@@ -107,4 +132,10 @@ export async function openBaseSite(name) {
     await server.close();
     throw error;
   }
+}
+
+// Run as a script: the base-path build made ahead of the tests that serve it.
+if (process.argv[1] && import.meta.url === pathToFileURL(process.argv[1]).href) {
+  await ensureBaseBuild((line) => console.log(`base-build: ${line}`));
+  console.log(`base-build: ${BASE_DIST} is the build of the sources for ${BASE}`);
 }

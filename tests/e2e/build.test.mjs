@@ -5,15 +5,14 @@
  * the build leaves to publish is only what a static host serves.
  *
  * The fixture chapters (tests/e2e/fixtures/) are built on their own, through
- * PHASEBOOK_CONTENT_DIR, into a temporary folder; the book's own build is the
+ * PHASEBOOK_CONTENT_DIR, into a temporary folder in build/; the book's own build is the
  * one under test (PHASEBOOK_OUT_DIR or dist/).
  */
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawn } from 'node:child_process';
 import { existsSync } from 'node:fs';
-import { mkdtemp, readdir, rm } from 'node:fs/promises';
-import { tmpdir } from 'node:os';
+import { mkdir, mkdtemp, readdir, rm } from 'node:fs/promises';
 import { join, relative, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { DIST } from './server.mjs';
@@ -21,9 +20,15 @@ import { DIST } from './server.mjs';
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
 const FIXTURES = fileURLToPath(new URL('./fixtures/', import.meta.url));
 
-/** Builds the chapters of `contentDir` into a fresh folder: the exit status, everything printed, and the files written. */
+/**
+ * Builds the chapters of `contentDir` into a fresh folder: the exit status, everything printed, and the files written.
+ * The folder is inside the project: Astro renders the pages of a build whose output lies outside the folder it runs
+ * in from a bundle it writes to that folder's .astro/, which every such build shares, so that a build running at
+ * the same time (the base-path build beside the e2e files, tests/run.mjs) would render the other's chapters.
+ */
 async function buildChapters(contentDir) {
-  const out = await mkdtemp(join(tmpdir(), 'phasebook-build-test-'));
+  await mkdir(join(ROOT, 'build'), { recursive: true });
+  const out = await mkdtemp(join(ROOT, 'build', 'build-test-'));
   try {
     // Astro itself, not through npx, whose own notices are not the build's.
     const child = spawn(process.execPath, [join(ROOT, 'node_modules', 'astro', 'astro.js'), 'build'], {
