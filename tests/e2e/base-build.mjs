@@ -1,5 +1,5 @@
 /**
- * The book built a second time, for a base path (`PHASEBOOK_BASE=/phasebook/`),
+ * The book built a second time, for a base path (`PHASEBOOK_BASE=/phasebook-scorm-package-root/`),
  * as a GitHub project site is built: the e2e tests of the book under a sub-path
  * serve it there. It is built beside the site under test (PHASEBOOK_OUT_DIR +
  * `-base`, or build/site-base/), or taken from PHASEBOOK_BASE_OUT_DIR, and
@@ -22,7 +22,12 @@ import { startServer } from './server.mjs';
 
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
 
-export const BASE = '/phasebook/';
+/**
+ * The base path: the one the SCORM packages are built under (site/scorm/chapter-files.ts's PACKAGE_BASE),
+ * so that one build serves the base-path tests and the packages (tests/e2e/scorm.test.mjs), and a path
+ * nothing in the book contains, so that any address that escapes it is plain.
+ */
+export const BASE = '/phasebook-scorm-package-root/';
 
 export const BASE_DIST =
   process.env.PHASEBOOK_BASE_OUT_DIR ?? (process.env.PHASEBOOK_OUT_DIR ? `${process.env.PHASEBOOK_OUT_DIR.replace(/\/+$/, '')}-base` : join(ROOT, 'build', 'site-base'));

@@ -1,5 +1,5 @@
 /**
- * Every page of the book built for a base path (`/phasebook/`, base-build.mjs),
+ * Every page of the book built for a base path (base-build.mjs's BASE),
  * crawled: each page's links (a, area), assets (script, link, img, source,
  * iframe, the fonts its stylesheets declare), the requests it makes once
  * every cell has run (workers, chunks, fonts, the search index), its share

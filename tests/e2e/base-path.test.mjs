@@ -1,7 +1,7 @@
 /**
  * The book served under a base path, as a GitHub project site is
- * (`PHASEBOOK_BASE=/phasebook/ npm run build`, then the site at
- * `/phasebook/`): its pages, their links and search all stay under it, and
+ * (`PHASEBOOK_BASE=<base> npm run build`, then the site at
+ * that base, base-build.mjs's BASE): its pages, their links and search all stay under it, and
  * nothing is asked of the host's root. The site is built for this by
  * base-build.mjs when the one at hand is older than the site under test.
  */

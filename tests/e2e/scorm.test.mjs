@@ -13,9 +13,10 @@
  * The score and status the LMS received are checked, and printed as a
  * transcript; every request of the page must stay inside the package.
  *
- * The package's book is built under its own base (the packager builds it
- * when its sources changed): into PHASEBOOK_SCORM_SITE_DIR, or beside
- * PHASEBOOK_OUT_DIR with `-scorm`, or build/scorm-site/.
+ * The package's book is the base-path build the other e2e files serve
+ * (base-build.mjs, made once, under a lock): its base is the packages' own,
+ * so the packager takes it as it is, and this file checks that it did not
+ * build the book again.
  */
 import assert from 'node:assert/strict';
 import { execFile } from 'node:child_process';
@@ -30,6 +31,7 @@ import { unzipSync } from 'fflate';
 import { launchBrowser, watchPage } from './browser.mjs';
 import { startServer } from './server.mjs';
 import { answer, exercise } from './exercise-answers.mjs';
+import { BASE_DIST, ensureBaseBuild } from './base-build.mjs';
 
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
 const require = createRequire(import.meta.url);
@@ -40,7 +42,7 @@ const CHAPTERS = ['introduction', 'nonlinear-oscillator'];
 const SCO = '/lms/course-7/sco-3/';
 const LAUNCH = 'introduction/index.html';
 
-const siteDir = process.env.PHASEBOOK_SCORM_SITE_DIR ?? (process.env.PHASEBOOK_OUT_DIR ? `${process.env.PHASEBOOK_OUT_DIR.replace(/\/+$/, '')}-scorm` : undefined);
+const siteDir = process.env.PHASEBOOK_SCORM_SITE_DIR ?? BASE_DIST;
 
 /** The host page of the test LMS: scorm-again's API as window.API, a transcript of every call the SCO makes, the SCO in an iframe. */
 const HOST = `<!doctype html>
@@ -86,8 +88,10 @@ function packageScorm(args) {
 
 before(async () => {
   scratch = await mkdtemp(join(tmpdir(), 'phasebook-scorm-'));
+  if (!process.env.PHASEBOOK_SCORM_SITE_DIR) await ensureBaseBuild();
   const { stdout, stderr } = await packageScorm([...CHAPTERS, '--output', join(scratch, 'packages')]);
   process.stderr.write(stderr);
+  assert.doesNotMatch(stderr, /Building the book/, 'the packager takes the base-path build as it is: its base must be the packages\' own');
   assert.equal(stdout.trim(), join(scratch, 'packages'), 'the packager names its folder on stdout');
   packages = Object.fromEntries(await Promise.all(CHAPTERS.map(async (slug) => [slug, unzipSync(await readFile(join(scratch, 'packages', `${slug}.zip`)))])));
   // The LMS's own folder: its pages, and the introduction's package unpacked deep below.
