@@ -12,10 +12,8 @@
 export { createLibrary, loadExerciseWidget, prefetchWidgets, WIDGET_NAMES } from './catalogue.ts';
 export type { ExerciseHost, ProgressView } from './chapter/exercise/exercise.ts';
 export { exercisesInText, type Exercise, KIND_NAMES, parseExercise, publicPart, sealedPart } from './chapter/exercise/exercise-spec.ts';
-export { allowance, gradeNumber } from './chapter/exercise/grade.ts';
-export { runCheck } from './chapter/exercise/code-checks.ts';
-export { computeTruth } from './chapter/exercise/truths.ts';
 export { seal } from './chapter/exercise/seal.ts';
+export { computeTruth } from './chapter/exercise/truths.ts';
 export { memoryStore, PAGE_DATA_ATTRIBUTE, PAGE_DATA_FORMAT, pageContext, type PageContext, type PageData } from './chapter/models/page-data.ts';
 export { equationsHtml, equationsLatex, katexOptions, texHtml, typesetKey } from './chapter/math/typeset.ts';
 export { downloadText } from './exports/download.ts';

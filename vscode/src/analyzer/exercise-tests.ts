@@ -2,8 +2,8 @@
  * An exercise's declaration as a test: does its answer key teach what it
  * says? The reference answer must pass and every wrong answer it lists must
  * fail, graded and checked by the book's own code (computeTruth,
- * gradeNumber, runCheck), so a truth or a check the book adds is run here
- * as the page runs it. Pure but for the model compiler, which runs the H's
+ * gradeNumber, runCheck, from the exercise widget's module), so a truth or
+ * a check the book adds is run here as the page runs it. Pure but for the model compiler, which runs the H's
  * the declaration lists (JavaScript among them): the host asks for a
  * trusted workspace first.
  *
@@ -15,8 +15,11 @@
  *   fails at least one.
  */
 import { canonicalEquations, type Model } from '../../../core/index.ts';
-import { allowance, computeTruth, gradeNumber, runCheck, type Exercise } from '../../../widgets/index.ts';
+import { loadExerciseWidget, type Exercise } from '../../../widgets/index.ts';
 import type { ChapterExercise } from './exercises.ts';
+
+/** The book's grading, as the page's exercise widget grades (loaded with it, as the page loads it). */
+type Grading = Pick<Awaited<ReturnType<typeof loadExerciseWidget>>, 'allowance' | 'computeTruth' | 'gradeNumber' | 'runCheck'>;
 
 /** A finding against the declaration, and the answer it is about (as the declaration writes it) to point at. */
 export interface ExerciseFailure {
@@ -48,7 +51,7 @@ function fewMistakes(count: number, what: string): ExerciseFailure | null {
   return { message: `The exercise lists ${count} wrong ${what}${count === 1 ? '' : 's'}: give ${LEAST_MISTAKES} or more plausible ones (a factor of 2, a wrong sign, a formula outside its validity), so that the tests show the grading tells them from the truth.` };
 }
 
-function testNumber(exercise: Exercise): ExerciseVerdict {
+function testNumber(exercise: Exercise, { allowance, computeTruth, gradeNumber }: Grading): ExerciseVerdict {
   const answer = exercise.answer!;
   const unit = exercise.unit ? ` ${exercise.unit}` : '';
   const { name, args } = answer.truth;
@@ -88,7 +91,7 @@ function testNumber(exercise: Exercise): ExerciseVerdict {
   return verdict(report, failures);
 }
 
-async function testCode(exercise: Exercise): Promise<ExerciseVerdict> {
+async function testCode(exercise: Exercise, { runCheck }: Grading): Promise<ExerciseVerdict> {
   const code = exercise.code!;
   const build = (hamiltonian: string) => canonicalEquations({ dof: code.dof, hamiltonian, params: code.params });
   let reference: Model;
@@ -137,8 +140,9 @@ async function testCode(exercise: Exercise): Promise<ExerciseVerdict> {
 /** Runs the answer key of one declaration; never throws (a failure inside a check is reported as the check's). */
 export async function testExercise(exercise: Exercise): Promise<ExerciseVerdict> {
   try {
-    if (exercise.code) return await testCode(exercise);
-    if (exercise.answer) return testNumber(exercise);
+    const grading = await loadExerciseWidget();
+    if (exercise.code) return await testCode(exercise, grading);
+    if (exercise.answer) return testNumber(exercise, grading);
     return verdict([], [{ message: 'The exercise has neither "answer" nor "code": nothing to check.' }]);
   } catch (error) {
     // A truth that throws, say: the declaration's arguments are where to look.
