@@ -13,7 +13,6 @@ export { createLibrary, loadExerciseWidget, prefetchWidgets, WIDGET_NAMES } from
 export type { ExerciseHost, ProgressView } from './chapter/exercise/exercise.ts';
 export { exercisesInText, type Exercise, KIND_NAMES, parseExercise, publicPart, sealedPart } from './chapter/exercise/exercise-spec.ts';
 export { seal } from './chapter/exercise/seal.ts';
-export { computeTruth } from './chapter/exercise/truths.ts';
 export { memoryStore, PAGE_DATA_ATTRIBUTE, PAGE_DATA_FORMAT, pageContext, type PageContext, type PageData } from './chapter/models/page-data.ts';
 export { equationsHtml, equationsLatex, katexOptions, texHtml, typesetKey } from './chapter/math/typeset.ts';
 export { downloadText } from './exports/download.ts';

@@ -2,10 +2,10 @@
  * An exercise's declaration as a test: does its answer key teach what it
  * says? The reference answer must pass and every wrong answer it lists must
  * fail, graded and checked by the book's own code (computeTruth,
- * gradeNumber, runCheck, from the exercise widget's module), so a truth or
- * a check the book adds is run here as the page runs it. Pure but for the model compiler, which runs the H's
- * the declaration lists (JavaScript among them): the host asks for a
- * trusted workspace first.
+ * gradeNumber, runCheck: the modules the exercise widget grades with), so a
+ * truth or a check the book adds is run here as the page runs it. Pure but
+ * for the model compiler, which runs the H's the declaration lists
+ * (JavaScript among them): the host asks for a trusted workspace first.
  *
  * - a number (predict, find): the truth is a finite number and passes; it
  *   lists two wrong answers or more, and each lies beyond the tolerance
@@ -15,11 +15,25 @@
  *   fails at least one.
  */
 import { canonicalEquations, type Model } from '../../../core/index.ts';
-import { loadExerciseWidget, type Exercise } from '../../../widgets/index.ts';
+import type { Exercise } from '../../../widgets/index.ts';
 import type { ChapterExercise } from './exercises.ts';
 
-/** The book's grading, as the page's exercise widget grades (loaded with it, as the page loads it). */
-type Grading = Pick<Awaited<ReturnType<typeof loadExerciseWidget>>, 'allowance' | 'computeTruth' | 'gradeNumber' | 'runCheck'>;
+/**
+ * The book's grading, the modules the page's exercise widget grades with,
+ * loaded when an exercise first runs, as the page loads them. Imported
+ * lazily, not through the widgets' front door: a static export there would
+ * put them, and the truths' analysis, into every page's first chunk.
+ */
+async function loadGrading() {
+  const [grade, checks, truths] = await Promise.all([
+    import('../../../widgets/chapter/exercise/grade.ts'),
+    import('../../../widgets/chapter/exercise/code-checks.ts'),
+    import('../../../widgets/chapter/exercise/truths.ts'),
+  ]);
+  return { allowance: grade.allowance, gradeNumber: grade.gradeNumber, runCheck: checks.runCheck, computeTruth: truths.computeTruth };
+}
+
+type Grading = Awaited<ReturnType<typeof loadGrading>>;
 
 /** A finding against the declaration, and the answer it is about (as the declaration writes it) to point at. */
 export interface ExerciseFailure {
@@ -140,7 +154,7 @@ async function testCode(exercise: Exercise, { runCheck }: Grading): Promise<Exer
 /** Runs the answer key of one declaration; never throws (a failure inside a check is reported as the check's). */
 export async function testExercise(exercise: Exercise): Promise<ExerciseVerdict> {
   try {
-    const grading = await loadExerciseWidget();
+    const grading = await loadGrading();
     if (exercise.code) return await testCode(exercise, grading);
     if (exercise.answer) return testNumber(exercise, grading);
     return verdict([], [{ message: 'The exercise has neither "answer" nor "code": nothing to check.' }]);

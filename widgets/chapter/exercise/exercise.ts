@@ -17,16 +17,6 @@ import { gradeNumber, readNumber, type Verdict } from './grade.ts';
 import { unseal } from './seal.ts';
 import { computeTruth } from './truths.ts';
 
-/**
- * The book's grading, for a tool that checks an exercise's answer key
- * without a page (the VS Code extension's Test Explorer), reached through
- * loadExerciseWidget: a static export through the widgets' front door would
- * pull it, and the truths' analysis, into every page's first chunk.
- */
-export { allowance, gradeNumber } from './grade.ts';
-export { runCheck } from './code-checks.ts';
-export { computeTruth } from './truths.ts';
-
 export interface ProgressView {
   readonly status: 'solved' | 'attempted';
   readonly attempts: number;
