@@ -1,11 +1,13 @@
 /**
  * Checks one chapter as the book would build and run it, without running
  * anything: its front matter, its MDX, and each cell's syntax, name and
- * the names it reads. Pure: the caller passes the text and the names that
- * builtins provide, and gets problems at file offsets.
+ * the names it reads; and finds its exercises. Pure: the caller passes the
+ * text and the names that builtins provide, and gets problems at file
+ * offsets.
  */
 import { parseCell } from '@observablehq/parser';
 import { findCells, type ChapterCell } from './cells.ts';
+import { findExercises, type ChapterExercise } from './exercises.ts';
 import { splitChapter, type ChapterText } from './chapter-text.ts';
 import { parseChapterTree } from './chapter-tree.ts';
 import { checkFrontMatter, type FrontMatterCheck } from './front-matter.ts';
@@ -17,6 +19,8 @@ export interface ChapterAnalysis {
   readonly lines: LineIndex;
   readonly frontMatter: FrontMatterCheck;
   readonly cells: readonly ChapterCell[];
+  /** The ```exercise fences, each with its declaration or the parser's refusal. */
+  readonly exercises: readonly ChapterExercise[];
   /** Problems of this file alone; duplicate orders need the workspace (orders.ts). */
   readonly problems: readonly Problem[];
 }
@@ -112,8 +116,9 @@ export function analyzeChapter(text: string, builtins: ReadonlySet<string>): Cha
   const frontMatter = checkFrontMatter(chapter);
   const { tree, mdxError } = parseChapterTree(chapter.body);
   const cells = findCells(tree, lines);
+  const exercises = findExercises(tree, text);
   const problems: Problem[] = [...frontMatter.problems];
   if (mdxError) problems.push({ code: 'mdx-syntax', severity: 'error', message: mdxError.message, ...oneCharacter(lines, mdxError.offset) });
   problems.push(...cellProblems(cells, builtins, lines));
-  return { chapter, lines, frontMatter, cells, problems };
+  return { chapter, lines, frontMatter, cells, exercises, problems };
 }

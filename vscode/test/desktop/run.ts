@@ -8,7 +8,7 @@
  *   2. "Phasebook: New Chapter" asks for a title and writes content/<title>.mdx from the template;
  *   3. the fork's fixtures give no problems (the status bar's count is zero);
  *   4. the new chapter's preview renders: its simulator draws, and moves;
- *   5. "Test: Run All Tests" passes every theory check, the fixtures' being none of them.
+ *   5. "Test: Run All Tests" passes every theory check and exercise, the fixtures' being none of them.
  * Each step waits for its state; none is judged by how long it took. Too slow to install for
  * every run of `npm test` (see code-server.ts), it runs alone:
  *
@@ -183,9 +183,9 @@ async function main(): Promise<number> {
       return chapters.every((c) => found.some((row) => row.startsWith(`${c} (Passed)`) || row.startsWith(`${c} (Failed)`) || row.startsWith(`${c} (Errored)`))) ? found : undefined;
     });
     const failed = chapters.filter((c) => !rows.some((row) => row.startsWith(`${c} (Passed)`)));
-    if (failed.length) throw new Error(`theory checks did not pass: ${rows.join('; ')}`);
+    if (failed.length) throw new Error(`theory checks or exercises did not pass: ${rows.join('; ')}`);
     if (rows.some((row) => row.startsWith('Checks that pass, fail and throw'))) throw new Error(`the fixtures' checks are listed as tests: ${rows.join('; ')}`);
-    stage(`5. every theory check passed: ${rows.join('; ')}`);
+    stage(`5. every theory check and exercise passed: ${rows.join('; ')}`);
     return 0;
   } catch (error) {
     stage(`failed: ${(error as Error).message}`);

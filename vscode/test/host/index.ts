@@ -14,6 +14,7 @@ export async function run(): Promise<void> {
   await import('./completion.test.ts');
   await import('./new-chapter.test.ts');
   await import('./theory-tests.test.ts');
+  await import('./exercises.test.ts');
   await import('./preview.test.ts');
   return new Promise((resolve, reject) => {
     mocha.run((failures) => (failures ? reject(new Error(`${failures} test(s) failed`)) : resolve()));

@@ -70,3 +70,47 @@ export function nonEmpty<T>(list: readonly T[]): readonly T[] | undefined {
 export function pause(ms: number): Promise<void> {
   return new Promise((resolve) => setTimeout(resolve, ms));
 }
+
+export function children(item: vscode.TestItem): vscode.TestItem[] {
+  const found: vscode.TestItem[] = [];
+  item.children.forEach((child) => found.push(child));
+  return found;
+}
+
+/**
+ * What a test run reports, recorded: the controller's runs are wrapped while `act` runs, since
+ * an extension cannot read test results back from VS Code. A failure lists each of its messages
+ * with the line it is shown at.
+ */
+export async function recordRun(controller: vscode.TestController, act: () => Thenable<void> | void): Promise<string[]> {
+  const outcomes: string[] = [];
+  const create = controller.createTestRun;
+  const all = (message: vscode.TestMessage | readonly vscode.TestMessage[]) => (Array.isArray(message) ? message : [message]) as vscode.TestMessage[];
+  controller.createTestRun = (...args) => {
+    const run = create.apply(controller, args);
+    return {
+      ...run,
+      token: run.token,
+      started: (item) => (outcomes.push(`started ${item.label}`), run.started(item)),
+      passed: (item, duration) => (outcomes.push(`passed ${item.label}`), run.passed(item, duration)),
+      failed: (item, message, duration) => {
+        const said = all(message).map((m) => {
+          const text = m.expectedOutput === undefined ? String(m.message) : `expected ${m.expectedOutput}, actual ${m.actualOutput}`;
+          return `${text}, at line ${m.location?.range.start.line}`;
+        });
+        outcomes.push(`failed ${item.label}: ${said.join('; ')}`);
+        run.failed(item, message, duration);
+      },
+      errored: (item, message, duration) => (outcomes.push(`errored ${item.label}: ${all(message)[0].message}`), run.errored(item, message, duration)),
+      skipped: (item) => (outcomes.push(`skipped ${item.label}`), run.skipped(item)),
+      appendOutput: (...output) => run.appendOutput(...output),
+      end: () => (outcomes.push('end'), run.end()),
+    } as vscode.TestRun;
+  };
+  try {
+    await act();
+  } finally {
+    controller.createTestRun = create;
+  }
+  return outcomes;
+}

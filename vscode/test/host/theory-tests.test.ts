@@ -1,48 +1,7 @@
 import { expect } from 'chai';
 import * as vscode from 'vscode';
 import { PREVIEW_VIEW_TYPE } from '../../src/host/preview/chapter-preview.ts';
-import { diagnosticsOf, extensionApi, waitFor, workspaceFile } from './support.ts';
-
-const children = (item: vscode.TestItem) => {
-  const found: vscode.TestItem[] = [];
-  item.children.forEach((child) => found.push(child));
-  return found;
-};
-
-/**
- * What a test run reports, recorded: the controller's runs are wrapped while `act` runs, since
- * an extension cannot read test results back from VS Code.
- */
-async function recordRun(controller: vscode.TestController, act: () => Thenable<void> | void): Promise<string[]> {
-  const outcomes: string[] = [];
-  const create = controller.createTestRun;
-  const first = (message: vscode.TestMessage | readonly vscode.TestMessage[]) => (Array.isArray(message) ? message[0] : message) as vscode.TestMessage;
-  controller.createTestRun = (...args) => {
-    const run = create.apply(controller, args);
-    return {
-      ...run,
-      token: run.token,
-      started: (item) => (outcomes.push(`started ${item.label}`), run.started(item)),
-      passed: (item, duration) => (outcomes.push(`passed ${item.label}`), run.passed(item, duration)),
-      failed: (item, message, duration) => {
-        const m = first(message);
-        const said = m.expectedOutput === undefined ? String(m.message) : `expected ${m.expectedOutput}, actual ${m.actualOutput}`;
-        outcomes.push(`failed ${item.label}: ${said}, at line ${m.location?.range.start.line}`);
-        run.failed(item, message, duration);
-      },
-      errored: (item, message, duration) => (outcomes.push(`errored ${item.label}: ${first(message).message}`), run.errored(item, message, duration)),
-      skipped: (item) => (outcomes.push(`skipped ${item.label}`), run.skipped(item)),
-      appendOutput: (...output) => run.appendOutput(...output),
-      end: () => (outcomes.push('end'), run.end()),
-    } as vscode.TestRun;
-  };
-  try {
-    await act();
-  } finally {
-    controller.createTestRun = create;
-  }
-  return outcomes;
-}
+import { children, diagnosticsOf, extensionApi, recordRun, waitFor, workspaceFile } from './support.ts';
 
 /** The tabs of Phasebook previews, in every editor group. */
 const previewTabs = () =>
@@ -56,7 +15,8 @@ describe('theory checks in the Test Explorer', () => {
     const items = theoryTests.controller.items;
     const pendulum = await waitFor('the pendulum chapter', () => items.get(workspaceFile('content/pendulum.mdx').toString()));
     expect(pendulum.label).to.equal('The pendulum');
-    expect(children(pendulum).map((c) => c.label)).to.deep.equal(['Period of the pendulum']);
+    // Its exercises, beside the check, are exercises.test.ts's.
+    expect(children(pendulum).map((c) => c.label)).to.deep.equal(['Period of the pendulum', 'Exercises']);
     const checks = items.get(workspaceFile('content/checks.mdx').toString())!;
     expect(children(checks).map((c) => [c.label, c.range?.start.line])).to.deep.equal([['Two plus two', 6], ['Pi, roughly', 10]]);
     // A chapter without checks has no item.
@@ -106,13 +66,16 @@ describe('theory checks in the Test Explorer', () => {
     await vscode.window.tabGroups.close(previewTabs());
     await waitFor('the previews to close', () => previewTabs().length === 0 && !previews.get(workspaceFile('content/checks.mdx')));
     const stalled = theoryTests.controller.items.get(workspaceFile('content/stalled.mdx').toString())!;
+    // The exercises run without a preview (exercises.test.ts runs them).
+    const exercises: vscode.TestItem[] = [];
+    theoryTests.controller.items.forEach((chapter) => exercises.push(...children(chapter).filter((c) => c.label === 'Exercises')));
     const panels = new Set<vscode.WebviewPanel>();
     const opened = previews.onDidOpen((preview) => panels.add(preview.panel));
     let outcomes: string[];
     try {
-      // Every test but the one that never settles (the next test's): no item included means all.
+      // Every check but the one that never settles (the next test's): no item included means all.
       outcomes = await recordRun(theoryTests.controller, () =>
-        theoryTests.profile.runHandler(new vscode.TestRunRequest(undefined, [stalled]), new vscode.CancellationTokenSource().token),
+        theoryTests.profile.runHandler(new vscode.TestRunRequest(undefined, [stalled, ...exercises]), new vscode.CancellationTokenSource().token),
       );
     } finally {
       opened.dispose();
