@@ -1,12 +1,17 @@
 /**
- * Boxes that scroll sideways (display math, code wider than the column on a
- * phone) must be reachable by keyboard, or a keyboard reader cannot see
- * their end. Only boxes that do overflow become focusable: a tab stop on
- * every formula would be noise. Checked after the first paint, whenever the
- * column's width changes, when fonts finish loading, and when prose that was
- * not laid out comes near the view.
+ * Boxes that scroll sideways (display math, a cell's output wider than the
+ * column on a phone) must be reachable by keyboard, or a keyboard reader
+ * cannot see their end. Only boxes that do overflow become focusable: a tab
+ * stop on every formula would be noise. Checked after the first paint,
+ * whenever the column's width changes, when fonts finish loading, and when
+ * prose that was not laid out comes near the view.
+ *
+ * A cell's code is not among them: the build makes every code box focusable
+ * and names it (site/lib/remark-cells.mjs), wide or not, since it is also
+ * the editor's stand-in. Measuring it too laid out each far code box for
+ * nothing, a forced layout apiece.
  */
-const SCROLLERS = '.katex-display, pre.cell-code, .cell-output';
+const SCROLLERS = '.katex-display, .cell-output';
 
 /**
  * What a box that scrolls is called, for a screen reader: display math has
@@ -30,15 +35,13 @@ function apply(box: HTMLElement, wide: boolean): void {
   box.toggleAttribute('data-scrollable', wide);
   if (wide) {
     box.tabIndex = 0;
-    // A named region: a span or div may carry a name only with a role. Code keeps the build's name and role.
-    if (box.matches('pre.cell-code')) return;
+    // A named region: a span or div may carry a name only with a role.
     if (!box.hasAttribute('role')) box.setAttribute('role', 'region');
     if (!box.hasAttribute('aria-label')) {
       box.setAttribute('aria-label', labelOf(box));
       box.dataset.scrollLabelled = '';
     }
-  } else if (!box.matches('pre.cell-code')) {
-    // The build made code focusable on its own (it is also the editor's stand-in); the others were made so here.
+  } else {
     box.removeAttribute('tabindex');
     if (box.getAttribute('role') === 'region') box.removeAttribute('role');
     if (box.dataset.scrollLabelled !== undefined) box.removeAttribute('aria-label');
