@@ -6,7 +6,7 @@
  *   H = (px² + py²)/2 + y·px − x·py − (1 − μ)/r1 − μ/r2
  *
  * (Murray & Dermott, Solar System Dynamics, ch. 3; Szebehely, Theory of
- * Orbits, ch. 4). The state is [x, y, px, py].
+ * Orbits, 1967). The state is [x, y, px, py].
  */
 
 /** Routh's critical mass ratio: L4 and L5 are linearly stable for μ below it (Murray & Dermott §3.8). */
@@ -35,7 +35,8 @@ function polynomial(c: readonly number[], gamma: number): number {
 
 /**
  * The quintics whose positive root is the distance γ of a collinear point
- * from its nearer primary (Szebehely §4.5; Murray & Dermott §3.6):
+ * from its nearer primary (Szebehely, Theory of Orbits; Murray & Dermott ch. 3),
+ * from the force balance ∂Ω/∂x = 0 on the axis cleared of its denominators:
  * L1 lies at 1 − μ − γ, L2 at 1 − μ + γ (both measured from m2), L3 at −μ − γ
  * (measured from m1).
  */
@@ -110,7 +111,7 @@ export interface TriangularModes {
 
 /**
  * The small oscillations about L4 (or L5): the roots of
- * λ⁴ + λ² + (27/4)μ(1 − μ) = 0 (Murray & Dermott §3.8, eq. 3.145).
+ * λ⁴ + λ² + (27/4)μ(1 − μ) = 0 (Murray & Dermott §3.8).
  */
 export function triangularModes(mu: number): TriangularModes {
   const k = (27 / 4) * mu * (1 - mu);
@@ -123,4 +124,31 @@ export function triangularModes(mu: number): TriangularModes {
   // λ² = (−1 ± i√(4k − 1))/2 has modulus √k: λ = ±(a ± ib) with a² = (√k − 1/2)/2, b² = (√k + 1/2)/2
   const modulus = Math.sqrt(k);
   return { stable: false, libration: NaN, epicycle: NaN, growth: Math.sqrt((modulus - 0.5) / 2), rotation: Math.sqrt((modulus + 0.5) / 2) };
+}
+
+/**
+ * Points of the zero-velocity curve 2Ω(x, y) = C inside the square |x|, |y| ≤ half,
+ * found where 2Ω − C changes sign between neighbours of an n × n grid, along
+ * its rows and its columns, and placed there by linear interpolation (to
+ * within the grid's spacing squared times Ω's curvature). Also the grid
+ * points where 2Ω < C, the region a particle of Jacobi constant C cannot
+ * reach, since v² = 2Ω − C would be negative there (Murray & Dermott ch. 3).
+ */
+export function zeroVelocityCurve(mu: number, C: number, { half = 1.6, n = 161, coarse = 41 } = {}): { curve: [number, number][]; forbidden: [number, number][] } {
+  const level = (x: number, y: number) => 2 * effectivePotential(x, y, mu) - C;
+  const at = (i: number, m: number) => -half + (2 * half * i) / (m - 1);
+  const curve: [number, number][] = [];
+  const values = Array.from({ length: n }, (_, j) => Array.from({ length: n }, (_, i) => level(at(i, n), at(j, n))));
+  const cross = (a: number, b: number) => a / (a - b);
+  for (let j = 0; j < n; j++) {
+    for (let i = 0; i + 1 < n; i++) {
+      const [a, b] = [values[j][i], values[j][i + 1]];
+      if (Math.sign(a) !== Math.sign(b) && Number.isFinite(a) && Number.isFinite(b)) curve.push([at(i, n) + cross(a, b) * (at(1, n) - at(0, n)), at(j, n)]);
+      const [c, d] = [values[i][j], values[i + 1][j]];
+      if (Math.sign(c) !== Math.sign(d) && Number.isFinite(c) && Number.isFinite(d)) curve.push([at(j, n), at(i, n) + cross(c, d) * (at(1, n) - at(0, n))]);
+    }
+  }
+  const forbidden: [number, number][] = [];
+  for (let j = 0; j < coarse; j++) for (let i = 0; i < coarse; i++) if (level(at(i, coarse), at(j, coarse)) < 0) forbidden.push([at(i, coarse), at(j, coarse)]);
+  return { curve, forbidden };
 }

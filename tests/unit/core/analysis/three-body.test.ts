@@ -2,14 +2,14 @@
  * The restricted three-body problem's closed forms and roots
  * (core/analysis/three-body.ts), against independent truths: the collinear
  * points against the force balance ∂Ω/∂x = 0 solved here by its own
- * bisection, against the Earth–Moon values (μ = 0.012150585; Szebehely,
- * Theory of Orbits, §4.5) and against Hill's limit γ → (μ/3)^{1/3}
- * (Murray & Dermott §3.6); L4's roots against the characteristic polynomial
+ * bisection, against the Earth–Moon values as mission designers tabulate
+ * them (μ = 0.012150585) and against Hill's limit γ → (μ/3)^{1/3} with its
+ * next term (Murray & Dermott ch. 3); L4's roots against the characteristic polynomial
  * of the linearised equations, built here from Ω's second derivatives by
  * finite differences; Routh's μ against 27μ(1 − μ) = 1.
  */
 import { describe, expect, test } from 'vitest';
-import { effectivePotential, jacobiConstant, lagrangePoints, ROUTH_MU, triangularModes } from '../../../../core/analysis/three-body.ts';
+import { effectivePotential, jacobiConstant, lagrangePoints, ROUTH_MU, triangularModes, zeroVelocityCurve } from '../../../../core/analysis/three-body.ts';
 
 /** ∂Ω/∂x on the axis, written out from Ω = x²/2 + (1 − μ)/|x + μ| + μ/|x − 1 + μ|. */
 const axialForce = (x: number, mu: number) => x - ((1 - mu) * (x + mu)) / Math.abs(x + mu) ** 3 - (mu * (x - 1 + mu)) / Math.abs(x - 1 + mu) ** 3;
@@ -36,7 +36,7 @@ describe('lagrangePoints(μ)', () => {
     }
   });
 
-  test('the Earth–Moon points, μ = 0.012150585: L1 = 0.836915, L2 = 1.155682, L3 = −1.005063 (Szebehely §4.5)', () => {
+  test('the Earth–Moon points, μ = 0.012150585: L1 = 0.836915, L2 = 1.155682, L3 = −1.005063', () => {
     const [l1, l2, l3] = lagrangePoints(0.012150585);
     expect(l1.x).toBeCloseTo(0.836915, 5);
     expect(l2.x).toBeCloseTo(1.155682, 5);
@@ -47,7 +47,7 @@ describe('lagrangePoints(μ)', () => {
     const mu = 1e-9;
     const hill = Math.cbrt(mu / 3);
     const [l1, l2, l3] = lagrangePoints(mu);
-    // the next term is ∓hill²/3 (Murray & Dermott eq. 3.83–3.84)
+    // the next term is ∓hill²/3 (Hill's series, Murray & Dermott ch. 3)
     expect(Math.abs(1 - mu - l1.x - (hill - hill ** 2 / 3))).toBeLessThan(hill ** 3);
     expect(Math.abs(l2.x - (1 - mu) - (hill + hill ** 2 / 3))).toBeLessThan(hill ** 3);
     expect(Math.abs(-mu - l3.x - (1 - (7 * mu) / 12))).toBeLessThan(1e-12);
@@ -95,7 +95,7 @@ describe('triangularModes(μ)', () => {
       for (const omega of [m.libration, m.epicycle]) expect(Math.abs(omega ** 4 - b * omega ** 2 + c)).toBeLessThan(1e-6);
       expect(m.libration).toBeLessThan(m.epicycle);
     }
-    // small μ: the libration frequency tends to √(27μ/4) (Murray & Dermott eq. 3.148), the epicycle to 1
+    // small μ: the libration frequency tends to √(27μ/4), the epicycle to 1 (Murray & Dermott §3.8)
     const small = triangularModes(1e-8);
     expect(small.libration / Math.sqrt((27 * 1e-8) / 4)).toBeCloseTo(1, 6);
     expect(small.epicycle).toBeCloseTo(1, 6);
@@ -120,5 +120,25 @@ describe('triangularModes(μ)', () => {
     expect(ROUTH_MU).toBeCloseTo(0.0385209, 7);
     expect(triangularModes(ROUTH_MU * 0.999).stable).toBe(true);
     expect(triangularModes(ROUTH_MU * 1.001).stable).toBe(false);
+  });
+});
+
+describe('zeroVelocityCurve(μ, C)', () => {
+  test('its points lie on 2Ω = C to the grid’s interpolation error, and the forbidden points below it', () => {
+    const mu = 0.1;
+    const C = 3.6;
+    const { curve, forbidden } = zeroVelocityCurve(mu, C);
+    expect(curve.length).toBeGreaterThan(100);
+    // linear interpolation over a spacing h = 0.02 errs by about h²|∂²(2Ω)| / 8 relative to |∇(2Ω)|: well under 1 %
+    for (const [x, y] of curve) expect(Math.abs(2 * effectivePotential(x, y, mu) - C) / C).toBeLessThan(0.01);
+    expect(forbidden.length).toBeGreaterThan(10);
+    for (const [x, y] of forbidden) expect(2 * effectivePotential(x, y, mu)).toBeLessThan(C);
+  });
+
+  test('below the Jacobi constant at L4, 3 − μ(1 − μ), no point is forbidden and there is no curve (Ω is least at L4 and L5)', () => {
+    const mu = 0.01;
+    const { curve, forbidden } = zeroVelocityCurve(mu, 3 - mu * (1 - mu) - 1e-6);
+    expect(curve).toEqual([]);
+    expect(forbidden).toEqual([]);
   });
 });
