@@ -7,11 +7,13 @@
  */
 import type { Truth } from './truth.ts';
 import { OSCILLATOR_TRUTHS } from './truths/oscillators.ts';
+import { THREE_BODY_TRUTHS } from './truths/three-body.ts';
 
 export type { Truth } from './truth.ts';
 
 export const TRUTHS: Readonly<Record<string, Truth>> = {
   ...OSCILLATOR_TRUTHS,
+  ...THREE_BODY_TRUTHS,
 };
 
 /** The truth's value for a declaration, or an error message naming what is wrong with it. */
