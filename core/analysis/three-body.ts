@@ -97,17 +97,15 @@ export function lagrangePoints(mu: number): LagrangePoint[] {
   ];
 }
 
-export interface TriangularModes {
-  /** μ < μ_Routh: the four roots are imaginary */
-  stable: boolean;
-  /** stable: the angular frequencies of the long-period (libration) and the short-period (epicyclic) motion; NaN when unstable */
-  libration: number;
-  epicycle: number;
-  /** unstable: the real part of the growing roots, the rate at which a small displacement grows; 0 when stable */
-  growth: number;
-  /** unstable: the imaginary part of the growing roots; NaN when stable */
-  rotation: number;
-}
+/**
+ * The small oscillations about L4 (or L5). Below Routh's μ the four roots
+ * are imaginary: two frequencies, and nothing grows. Above it two roots
+ * a ± ib have a positive real part: a displacement grows at the rate a,
+ * turning at b.
+ */
+export type TriangularModes =
+  | { stable: true; /** the long-period (libration) angular frequency */ libration: number; /** the short-period (epicyclic) angular frequency */ epicycle: number; growth: 0 }
+  | { stable: false; /** the real part of the growing roots */ growth: number; /** their imaginary part */ rotation: number };
 
 /**
  * The small oscillations about L4 (or L5): the roots of
@@ -119,11 +117,11 @@ export function triangularModes(mu: number): TriangularModes {
   if (discriminant >= 0) {
     // λ² = (−1 ± √(1 − 4k))/2, both negative: λ = ±iω
     const root = Math.sqrt(discriminant);
-    return { stable: true, libration: Math.sqrt((1 - root) / 2), epicycle: Math.sqrt((1 + root) / 2), growth: 0, rotation: NaN };
+    return { stable: true, libration: Math.sqrt((1 - root) / 2), epicycle: Math.sqrt((1 + root) / 2), growth: 0 };
   }
   // λ² = (−1 ± i√(4k − 1))/2 has modulus √k: λ = ±(a ± ib) with a² = (√k − 1/2)/2, b² = (√k + 1/2)/2
   const modulus = Math.sqrt(k);
-  return { stable: false, libration: NaN, epicycle: NaN, growth: Math.sqrt((modulus - 0.5) / 2), rotation: Math.sqrt((modulus + 0.5) / 2) };
+  return { stable: false, growth: Math.sqrt((modulus - 0.5) / 2), rotation: Math.sqrt((modulus + 0.5) / 2) };
 }
 
 /**
