@@ -106,8 +106,8 @@ function assertSweepPoint(checks, { mu, initial, dt }) {
       // the allowance is a small part of the frequency: the check tells a wrong root, or the small-μ form's factor 2
       assert.ok(check.tolerance < 0.05 * omega, JSON.stringify(check));
     }
-    assert.equal(growth.verdict, 'outside');
-    assert.match(growth.reason, /below Routh/);
+    // below Routh's value nothing grows, and the growth check is not shown
+    assert.equal(growth, undefined);
   } else {
     for (const check of [libration, epicycle]) {
       assert.equal(check.verdict, 'outside');
@@ -121,7 +121,7 @@ function assertSweepPoint(checks, { mu, initial, dt }) {
 
 test('the page loads clean: every cell runs, every widget gets ready, nothing leaves localhost', async () => {
   await assertLoadsClean(page, problems, {
-    '[data-widget="theory-check"]': 4,
+    '[data-widget="theory-check"]': 3,
     '[data-widget="equations"] .katex': 1,
     '[data-widget="chart"]': 1,
   });
