@@ -57,6 +57,8 @@ export { localSlopes, METHOD_ORDERS, orderCheck, orderStudy, type OrderStudyInpu
 export { completeEllipticK, pendulumPeriod } from './analysis/pendulum.ts';
 export { rk4Amplification, rk4StabilityLimit } from './analysis/rk-stability.ts';
 export { turningPoint, wellPeriod } from './analysis/well-period.ts';
+export { collinearQuintics, effectivePotential, jacobiConstant, type LagrangePoint, lagrangePoints, ROUTH_MU, triangularModes, type TriangularModes, zeroVelocityCurve } from './analysis/three-body.ts';
+export { type ExponentialGrowth, exponentialGrowth } from './analysis/exponential-growth.ts';
 export { chaoticArea, type ChaoticArea, sectionBox } from './analysis/poincare-area.ts';
 export { allowed, launchState, type Plane, planeIndices, section } from './analysis/poincare.ts';
 export { angleBetween, deflectionFrom, outgoingDirection, rutherfordAngle } from './analysis/scattering.ts';

@@ -8,6 +8,11 @@
  * - `order` (integer, required): the chapter's position in the book. Chapters are listed and
  *   linked in increasing `order`; two chapters may not share one (the build fails). Leave gaps
  *   (1, 2, 3 … 99) so a chapter can be slotted in without renumbering.
+ * - `part` (integer, optional): the part of the book the chapter belongs to, 1 or 2, whose
+ *   title (`PART_TITLES` in site/lib/chapter-schema.ts) heads it on the contents page: 1 for
+ *   the paper's examples (orders 1–9), 2 for the geometry of phase space and the road to chaos
+ *   (orders 20–29). Pages outside the parts (the playground, the teachers' guide, the about
+ *   page) leave it out and are listed after them, under no heading.
  * - `slug` (string, optional): the URL segment, `/<slug>/`. Defaults to the file name
  *   without `.mdx` (this is the glob loader's own rule).
  *

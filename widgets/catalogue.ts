@@ -71,6 +71,7 @@ export function createLibrary(page: PageContext, cellSignal: () => AbortSignal |
   const spectrum = () => import('../core/spectrum/spectrum.ts');
   const invariants = () => import('../core/invariants.ts');
   const analysis = () => import('./chapter/analysis/analysis.ts');
+  const threeBody = () => import('../core/analysis/three-body.ts');
   const typesetting = () => import('./chapter/math/tex.ts').then((m) => m.typesetting(page.typeset));
   // New models compile in a worker (chapter/models/compile-worker.ts), reporting progress; an edit that supersedes the cell cancels its build.
   const build = (): BuildOptions => ({
@@ -114,6 +115,23 @@ export function createLibrary(page: PageContext, cellSignal: () => AbortSignal |
       import('./chapter/method-comparison/method-comparison.ts').then((m) => (options: Parameters<typeof m.methodComparison>[0]) => m.methodComparison(options, build())),
     /** pendulumPeriod(q0, p0, omega) → the exact period 4K(k)/ω of H = p²/2 − ω² cos q, from the complete elliptic integral */
     pendulumPeriod: () => import('../core/analysis/pendulum.ts').then((m) => m.pendulumPeriod),
+
+    /** lagrangePoints(mu) → the five equilibria of the restricted three-body problem's rotating frame, [{name, x, y, jacobi}]: L1–L3 from their quintics, L4 and L5 in closed form */
+    lagrangePoints: () => threeBody().then((m) => m.lagrangePoints),
+    /** collinearQuintics(mu) → {L1, L2, L3}: the coefficients, highest power first, of the quintic whose root is each collinear point's distance from its nearer primary */
+    collinearQuintics: () => threeBody().then((m) => m.collinearQuintics),
+    /** triangularModes(mu) → {stable, libration, epicycle, growth, rotation}: the roots of λ⁴ + λ² + (27/4)μ(1 − μ) = 0 about L4 */
+    triangularModes: () => threeBody().then((m) => m.triangularModes),
+    /** routhMu: (1 − √(23/27))/2 ≈ 0.0385, below which L4 and L5 are linearly stable */
+    routhMu: () => threeBody().then((m) => m.ROUTH_MU),
+    /** jacobiConstant([x, y, px, py], mu) → C = −2H of the restricted three-body problem in the rotating frame */
+    jacobiConstant: () => threeBody().then((m) => m.jacobiConstant),
+    /** effectivePotential(x, y, mu) → Ω = (x² + y²)/2 + (1 − μ)/r1 + μ/r2 */
+    effectivePotential: () => threeBody().then((m) => m.effectivePotential),
+    /** zeroVelocityCurve(mu, C, {half, n, coarse}) → {curve, forbidden}: points of 2Ω = C and grid points where 2Ω < C */
+    zeroVelocityCurve: () => threeBody().then((m) => m.zeroVelocityCurve),
+    /** exponentialGrowth(t, size, from, to) → {rate, bound, span, samples}: the rate a of a size growing as e^{at} times an oscillation, from a line through ln(size), with the bound the oscillation puts on it */
+    exponentialGrowth: () => import('../core/analysis/exponential-growth.ts').then((m) => m.exponentialGrowth),
 
     // The simulation core
     /** canonicalEquations({dof, hamiltonian, params}) → Promise of a Model */

@@ -8,7 +8,7 @@ import { getCollection } from 'astro:content';
 export interface Chapter {
   /** URL segment: the chapter lives at `/<id>/`. */
   readonly id: string;
-  readonly data: { readonly title: string; readonly description: string; readonly order: number };
+  readonly data: { readonly title: string; readonly description: string; readonly order: number; readonly part?: number };
 }
 
 /** Sorts by `order`; two chapters claiming one place is an authoring error that fails the build. */

@@ -40,6 +40,8 @@ describe('site/lib/chunks.mjs: what loads together', () => {
       'widgets/chapter/math/typeset.ts': 'tex',
       'widgets/chapter/poincare-section/section-systems.ts': 'poincare-section',
       'widgets/chapter/method-comparison/method-comparison-run.ts': 'method-comparison',
+      'widgets/chapter/exercise/exercise.ts': 'exercise',
+      'widgets/chapter/exercise/truths/three-body.ts': 'exercise',
       // Rollup places these: mathjs's own chunk, and the front door, which holds no code of its own
       'core/expression/mathjs-instance.ts': undefined,
       'core/index.ts': undefined,

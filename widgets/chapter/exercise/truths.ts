@@ -14,6 +14,7 @@ import { PARAMETRIC_TRUTHS } from './truths/parametric.ts';
 import { ADIABATIC_TRUTHS } from './truths/adiabatic.ts';
 import { SCATTERING_TRUTHS } from './truths/scattering.ts';
 import { RELATIVITY_TRUTHS } from './truths/relativity.ts';
+import { THREE_BODY_TRUTHS } from './truths/three-body.ts';
 
 export type { Truth } from './truth.ts';
 
@@ -26,6 +27,7 @@ export const TRUTHS: Readonly<Record<string, Truth>> = {
   ...RELATIVITY_TRUTHS,
   ...INTEGRATOR_TRUTHS,
   ...CHAOS_TRUTHS,
+  ...THREE_BODY_TRUTHS,
 };
 
 /** The truth's value for a declaration, or an error message naming what is wrong with it. */
