@@ -28,14 +28,13 @@ import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { DIST, startServer } from '../tests/e2e/server.mjs';
 import { readLinks } from '../tests/e2e/pdf-links.mjs';
+import { siteAddress, UsageError } from './book-options.mjs';
 
 const ROOT = fileURLToPath(new URL('..', import.meta.url));
 /** How long one chapter may take to run every cell and draw, ms: generous, for a loaded machine. */
 const CHAPTER_LIMIT_MS = 300_000;
 /** The layout width the chapters are drawn at, CSS px: about the printed text's width on A4, so figures scale little. */
 const PRINT_WIDTH = 760;
-
-class UsageError extends Error {}
 
 /** @param {string[]} argv */
 function parseArguments(argv) {
@@ -48,17 +47,8 @@ function parseArguments(argv) {
       return v;
     };
     if (flag === '--output') options.output = resolve(value());
-    else if (flag === '--site') {
-      const site = value();
-      let url;
-      try {
-        url = new URL(site.endsWith('/') ? site : `${site}/`);
-      } catch {
-        throw new UsageError(`--site must be an absolute address such as https://you.github.io/course/, not ${site}`);
-      }
-      if (!/^https?:$/.test(url.protocol)) throw new UsageError(`--site must be an http(s) address, not ${site}`);
-      options.site = url.href;
-    } else if (flag === '--help') {
+    else if (flag === '--site') options.site = siteAddress(value());
+    else if (flag === '--help') {
       process.stdout.write('npm run pdf -- [--output FILE (build/phasebook.pdf)] [--site URL where the book is published]\n');
       process.exit(0);
     } else throw new UsageError(`unknown option ${argv[i]}; the options are --output FILE and --site URL`);

@@ -28,10 +28,9 @@ import { ZipWriter } from '../cli/formats/zip-writer.ts';
 import { isUpToDate } from '../site/lib/build-fingerprint.mjs';
 import { PACKAGE_BASE } from '../site/scorm/chapter-files.ts';
 import { chapterPackage } from '../site/scorm/chapter-package.ts';
+import { siteAddress, UsageError } from './book-options.mjs';
 
 const ROOT = fileURLToPath(new URL('..', import.meta.url));
-
-class UsageError extends Error {}
 
 /** @param {string[]} argv */
 function parseArguments(argv) {
@@ -44,17 +43,8 @@ function parseArguments(argv) {
       return v;
     };
     if (flag === '--output') options.output = resolve(value());
-    else if (flag === '--site') {
-      const site = value();
-      let url;
-      try {
-        url = new URL(site.endsWith('/') ? site : `${site}/`);
-      } catch {
-        throw new UsageError(`--site must be an absolute address such as https://you.github.io/course/, not ${site}`);
-      }
-      if (!/^https?:$/.test(url.protocol)) throw new UsageError(`--site must be an http(s) address, not ${site}`);
-      options.site = url.href;
-    } else if (flag.startsWith('-')) throw new UsageError(`unknown option ${flag} (options: --output DIR, --site URL)`);
+    else if (flag === '--site') options.site = siteAddress(value());
+    else if (flag.startsWith('-')) throw new UsageError(`unknown option ${flag} (options: --output DIR, --site URL)`);
     else options.chapters.push(argv[i]);
   }
   return options;
