@@ -19,7 +19,7 @@ after(() => site?.close());
 test('the stability chart is operable by keyboard: arrows move the point over the grid, Enter applies it', async () => {
   const { page, problems } = await openChapter(site, '/parametric-resonance/');
   const chart = page.locator('[data-widget="stability-chart"]');
-  await page.waitForSelector('[data-widget="stability-chart"][data-ready]', { timeout: 60_000 });
+  await page.waitForSelector('[data-widget="stability-chart"][data-ready]');
   const explorer = cell(page, 'explorer').locator('[data-widget="simulator"]');
   const params = () => explorer.evaluate((el) => Object.fromEntries(el.simulator.model.paramNames.map((n, i) => [n, el.simulator.model.params[i]])));
   const before = await params();

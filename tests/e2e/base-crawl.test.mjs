@@ -165,7 +165,7 @@ test('under a base path, a share link and the downloads stay under the base', as
   // Downloads are made in the page (blob: URLs), never fetched from a path of the host.
   const sim = page.locator('[data-cell="sim"] [data-widget="simulator"]');
   await sim.scrollIntoViewIfNeeded();
-  await page.waitForFunction((el) => el.simulator?.simulation.t > 0.2, await sim.elementHandle(), { timeout: 60_000 });
+  await page.waitForFunction((el) => el.simulator?.simulation.t > 0.2, await sim.elementHandle());
   const [csv] = await Promise.all([page.waitForEvent('download'), sim.getByRole('button', { name: 'Download CSV' }).click()]);
   assert.match(csv.url(), /^(blob|data):/);
   assert.match(readFileSync(await csv.path(), 'utf8'), /^t,q,p,H\n/);

@@ -113,18 +113,18 @@ test('a chart a generator updates every frame is drawn while near the view only,
   const statePoint = () => figure.evaluate((el) => JSON.stringify(el.chart.series.find((s) => s.label === 'state now').curves));
   // Near the view: drawn frame after frame (a few at least, however few frames a busy machine gives).
   const before = await paints();
-  await page.waitForFunction((n) => (document.querySelector('[data-widget="chart"][data-label="The oscillator\'s state in phase space"] canvas').pbPaints ?? 0) >= n + 5, before, { timeout: 30_000 });
+  await page.waitForFunction((n) => (document.querySelector('[data-widget="chart"][data-label="The oscillator\'s state in phase space"] canvas').pbPaints ?? 0) >= n + 5, before);
   // Far from it: the chart keeps changing (its description and .chart follow), but nothing is drawn.
   await page.evaluate(() => window.scrollTo(0, document.documentElement.scrollHeight));
   await page.waitForTimeout(500);
   const away = await paints();
   const point = await statePoint();
-  await page.waitForFunction((p) => JSON.stringify(document.querySelector('[data-widget="chart"][data-label="The oscillator\'s state in phase space"]').chart.series.find((s) => s.label === 'state now').curves) !== p, point, { timeout: 30_000 });
+  await page.waitForFunction((p) => JSON.stringify(document.querySelector('[data-widget="chart"][data-label="The oscillator\'s state in phase space"]').chart.series.find((s) => s.label === 'state now').curves) !== p, point);
   await page.waitForTimeout(1000);
   assert.equal(await paints(), away, 'drawings while far from the view');
   // Back: drawn again.
   await figure.scrollIntoViewIfNeeded();
-  await page.waitForFunction((n) => (document.querySelector('[data-widget="chart"][data-label="The oscillator\'s state in phase space"] canvas').pbPaints ?? 0) > n, away, { timeout: 30_000 });
+  await page.waitForFunction((n) => (document.querySelector('[data-widget="chart"][data-label="The oscillator\'s state in phase space"] canvas').pbPaints ?? 0) > n, away);
   await page.close();
 });
 
@@ -139,6 +139,9 @@ test('Kepler’s live table updates in place: a phone reader scrolled to the "ch
     // scrollIntoView aligns to whole pixels; a box's edges may not be.
     return sim.top >= 0 && table.bottom <= innerHeight + 1;
   });
+  // A box that scrolls is marked as one (named, focusable) by an idle pass (cells/scrollables.ts), which on a
+  // busy machine may come after the table is in view.
+  await page.waitForFunction((b) => b.hasAttribute('role'), await box.elementHandle());
   assert.equal(await box.getAttribute('role'), 'region');
   assert.equal(await box.getAttribute('tabindex'), '0');
   const change = box.locator('thead th', { hasText: 'change' });

@@ -8,6 +8,13 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { chromium } from 'playwright-core';
 
+/**
+ * How long any wait of a test may last before it counts as a hang: the only limit on a wait, set once on every
+ * context, so that no test asserts how long something takes. A wait is for something that does happen; on a
+ * machine four times as loaded as a quiet one, it can take four times as long, and more.
+ */
+export const HANG_MS = 180_000;
+
 const ARGS = [
   '--no-sandbox',
   '--disable-gpu',
@@ -33,6 +40,8 @@ export async function launchBrowser(options = {}) {
     viewport: { width: 1100, height: 900 },
     ...options,
   });
+  context.setDefaultTimeout(HANG_MS);
+  context.setDefaultNavigationTimeout(HANG_MS);
   return {
     context,
     async close() {
@@ -82,7 +91,7 @@ export function watchPage(page) {
 
 /** Waits until the cells near the first view (and what they read) have shown their first value or error. */
 export async function firstViewReady(page) {
-  await page.waitForSelector('body[data-cells-ready]', { state: 'attached', timeout: 15_000 });
+  await page.waitForSelector('body[data-cells-ready]', { state: 'attached' });
 }
 
 /**
@@ -104,6 +113,6 @@ export async function cellsReady(page) {
     await page.evaluate(() => new Promise((done) => { requestAnimationFrame(() => requestAnimationFrame(done)); setTimeout(done, 1000); }));
     if (atBottom) break;
   }
-  await page.waitForSelector('body[data-cells-complete]', { state: 'attached', timeout: 30_000 });
+  await page.waitForSelector('body[data-cells-complete]', { state: 'attached' });
   await page.evaluate(() => window.scrollTo(0, 0));
 }

@@ -224,7 +224,6 @@ test('the simulator’s dt field and the chapter’s dt cell are one value: the 
   await page.waitForFunction(
     () => [...document.querySelectorAll('[data-widget="theory-check"]')].some((check) => /dt = 0\.001\b/.test(check.textContent ?? '')),
     null,
-    { timeout: 30_000 },
   );
   assert.deepEqual(problems, []);
   await page.close();

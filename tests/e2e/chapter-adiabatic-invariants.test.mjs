@@ -73,7 +73,6 @@ test('the sweep over ramp rates fills its figure: linear ramp ∝ ε, smooth ram
       return series.filter((s) => s.kind === 'dots').reduce((n, s) => n + s.curves[0].x.length, 0) === 17 + 16;
     },
     label,
-    { timeout: 20_000 },
   );
   const { series } = await chartIn(page, label);
   const points = (name) => {
@@ -102,7 +101,6 @@ test('editing the ramp rate re-runs the first check, which still agrees', async 
       return w && w.dataset.predicted !== old;
     },
     before.predicted.toString(),
-    { timeout: 20_000 },
   );
   const after = await checkIn('slowCheck');
   assertAgrees(after);

@@ -55,7 +55,6 @@ export async function widgetsReady(page, expected = {}) {
       return Object.entries(expected).every(([kind, n]) => count(kind) >= n) && all.every((w) => w.hasAttribute('data-ready'));
     },
     expected,
-    { timeout: 30_000 },
   );
 }
 
@@ -99,7 +98,7 @@ export function theoryChecks(page, { method = false } = {}) {
  */
 export async function theoryCheckIn(page, id, { wait = false } = {}) {
   const widget = cell(page, id).locator(THEORY_CHECK);
-  if (wait) await widget.waitFor({ timeout: 30_000 });
+  if (wait) await widget.waitFor();
   const [check] = await widget.evaluateAll(readChecks, false);
   return check;
 }
@@ -170,7 +169,7 @@ export function drawnPixels(page, selector) {
  */
 export async function chartIn(page, label) {
   const figure = page.locator(`[data-widget="chart"][data-label="${label}"][data-ready]`);
-  await figure.waitFor({ timeout: 20_000 });
+  await figure.waitFor();
   return figure.evaluate((f) => ({
     description: f.querySelector('.pb-chart-description')?.textContent ?? '',
     series: f.chart.series.map((s) => ({
@@ -223,7 +222,7 @@ export async function assertLoadsClean(page, problems, counts) {
 
 /**
  * Replaces cell `id`'s text with `source` and runs it, as a reader does, then
- * waits (up to `timeout` ms) until each cell in `checks` shows a theory check
+ * waits until each cell in `checks` shows a theory check
  * made after the edit, and returns those checks by cell, parsed like
  * {@link theoryChecks}. A check cell that fails instead makes this throw with
  * its error line, so a sweep point that breaks a cell says so.
@@ -231,9 +230,8 @@ export async function assertLoadsClean(page, problems, counts) {
  * @param {string} id
  * @param {string} source
  * @param {string[]} checks ids of the cells whose theory checks to wait for
- * @param {{ timeout?: number }} [options]
  */
-export async function editAndReadChecks(page, id, source, checks, { timeout = 60_000 } = {}) {
+export async function editAndReadChecks(page, id, source, checks) {
   const selector = checks.map((c) => `[data-cell="${c}"] ${THEORY_CHECK}`).join(', ');
   // Mark the checks on the page now; the ones made after the edit lack the mark.
   await page.$$eval(selector, (all) => all.forEach((w) => (w.dataset.stale = '')));
@@ -251,7 +249,6 @@ export async function editAndReadChecks(page, id, source, checks, { timeout = 60
       return states.filter((s) => s !== 'ok').join('; ') || 'none';
     },
     [checks, THEORY_CHECK],
-    { timeout },
   );
   const errors = await failed.jsonValue();
   if (errors !== 'none') throw new Error(`after ${id} = ${source}: ${errors}`);

@@ -52,7 +52,6 @@ test('editing the amplitude re-runs the period check, which still agrees', async
       return w && Number(w.dataset.tolerance) > 0.01;
     },
     null,
-    { timeout: 20_000 },
   );
   assertPeriod(await periodCheck(), 2, 1.5);
   assert.deepEqual(problems, []);

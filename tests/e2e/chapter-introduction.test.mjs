@@ -62,7 +62,7 @@ test('every widget kind is on the page, ready, and has drawn', async () => {
   // in its window. A simulator out of view pauses, and the reading through the chapter passed this one by in
   // moments (less simulated time the busier the machine): the reader looks at it, and it runs until it has one.
   await simulatorIn(page, 'sim').scrollIntoViewIfNeeded();
-  await simulatorIn(page, 'sim').locator('[data-widget="spectrum"]', { hasText: /drive κ\/2π/ }).waitFor({ timeout: 60_000 });
+  await simulatorIn(page, 'sim').locator('[data-widget="spectrum"]', { hasText: /drive κ\/2π/ }).waitFor();
   // H typeset from the model.
   assert.ok((await page.locator('[data-widget="equations"] .katex').count()) > 0);
 
@@ -103,7 +103,7 @@ test('the CSV download has the header, the rows of the interval, and the CLI’s
   const sim = simulatorIn(page, 'sim');
   // Out of view it would pause: the reader looks at it while it runs past the interval.
   await sim.scrollIntoViewIfNeeded();
-  await page.waitForFunction((el) => el.simulator.simulation.t > 1.2, await sim.elementHandle(), { timeout: 60_000 });
+  await page.waitForFunction((el) => el.simulator.simulation.t > 1.2, await sim.elementHandle());
   await sim.locator('input[aria-label^="Export from time t0"]').fill(String(T0));
   await sim.locator('input[aria-label^="Export to time t1"]').fill(String(T1));
   const [download] = await Promise.all([page.waitForEvent('download'), sim.getByRole('button', { name: 'Download CSV' }).click()]);
@@ -142,14 +142,13 @@ test('editing a parameter re-runs the checks; the drive line follows κ', async 
   await page.waitForFunction(
     (f) => Math.abs(Number(document.querySelector('[data-widget="theory-check"]')?.dataset.predicted) - f) < 1e-12,
     expected,
-    { timeout: 20_000 },
   );
-  await page.waitForFunction(() => document.querySelectorAll('[data-widget="theory-check"]').length === 2, null, { timeout: 20_000 });
+  await page.waitForFunction(() => document.querySelectorAll('[data-widget="theory-check"]').length === 2, null);
   const [line, order] = await theoryChecks(page);
   assertAgrees(line, { relative: false });
   assert.ok(Math.abs(line.predicted - expected) < 1e-12);
   assertAgrees(order, { relative: false });
-  await page.waitForFunction(() => document.querySelector('[data-cell="sim"] [data-widget="simulator"]')?.hasAttribute('data-ready'), null, { timeout: 30_000 });
+  await page.waitForFunction(() => document.querySelector('[data-cell="sim"] [data-widget="simulator"]')?.hasAttribute('data-ready'), null);
   assert.equal(await simulatorIn(page, 'sim').evaluate((el) => el.simulator.model.params[3]), 5);
   assert.deepEqual(problems, []);
 });

@@ -59,7 +59,7 @@ test('the stars have drawn their orbits and the readouts follow the simulation',
   await page.locator('[data-widget="simulator"]').first().scrollIntoViewIfNeeded();
   const table = page.locator('table:has(caption)');
   const first = await table.locator('caption').textContent();
-  await page.waitForFunction((before) => document.querySelector('table caption')?.textContent !== before, first, { timeout: 10_000 });
+  await page.waitForFunction((before) => document.querySelector('table caption')?.textContent !== before, first);
   const rows = await table.locator('tr').evaluateAll((trs) => trs.slice(1).map((tr) => [...tr.cells].map((c) => c.textContent.trim())));
   const byName = Object.fromEntries(rows.map(([name, ...values]) => [name, values.map(Number)]));
   const orbit = elements(INITIAL, 500);
@@ -78,7 +78,6 @@ test('editing k re-runs the checks, which still agree (k = 400)', async () => {
       return check && Math.abs(Number(check.getAttribute('data-predicted')) - expected) < 1e-9;
     },
     T,
-    { timeout: 20_000 },
   );
   await widgetsReady(page);
   const orbit = await assertChecks(400);

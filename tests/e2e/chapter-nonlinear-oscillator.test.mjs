@@ -99,7 +99,6 @@ test('the views have drawn, with the measured peak near the theory marker', asyn
   await page.waitForFunction(
     (f) => Math.abs((document.querySelector('[data-widget="spectrum"]')?.peaks?.[0]?.frequency ?? 0) - f) < 0.05,
     expected,
-    { timeout: 20_000 },
   );
   // Every plot has drawn something besides its background (on one of its layers).
   await assertDrawn(page, '[data-widget="time-plot"], [data-widget="phase-portrait"], [data-widget="spectrum"]', 3);
@@ -122,7 +121,6 @@ test('editing b re-runs the checks, which still agree (b = 0.5)', async () => {
       return Math.abs(first - formulaValue) < 1e-12 && Math.abs(second - exactValue) < 1e-5;
     },
     [omega, exact],
-    { timeout: 15_000 },
   );
   await widgetsReady(page);
   await assertChecks(0.5);

@@ -79,15 +79,15 @@ test('a click launches an orbit: regular on a curve at E = 1/12, chaotic in the 
   const canvas = section.locator('canvas');
   await section.scrollIntoViewIfNeeded();
   await canvas.click({ position: await pointAt(1 / 12, 0.1, 0) });
-  await page.waitForFunction((s) => document.querySelector(s).dataset.launched === '1', SECTION, { timeout: 30_000 });
+  await page.waitForFunction((s) => document.querySelector(s).dataset.launched === '1', SECTION);
   const regular = Number(await section.getAttribute('data-exponent'));
   assert.ok(regular >= 0 && regular < 0.02, String(regular));
   assert.match(await section.locator('.pb-stability-reading').textContent(), /regular/);
 
   await section.getByLabel('1/6').check();
-  await page.waitForFunction((s) => document.querySelector(s).hasAttribute('data-ready') && document.querySelector(s).dataset.energy === String(1 / 6), SECTION, { timeout: 30_000 });
+  await page.waitForFunction((s) => document.querySelector(s).hasAttribute('data-ready') && document.querySelector(s).dataset.energy === String(1 / 6), SECTION);
   await canvas.click({ position: await pointAt(1 / 6, 0.1, 0.1) });
-  await page.waitForFunction((s) => document.querySelector(s).dataset.launched === '1', SECTION, { timeout: 30_000 });
+  await page.waitForFunction((s) => document.querySelector(s).dataset.launched === '1', SECTION);
   const chaotic = Number(await section.getAttribute('data-exponent'));
   assert.ok(chaotic > 0.05, String(chaotic));
 
@@ -108,7 +108,7 @@ test('the keyboard launches an orbit too: arrows move the point, Enter launches'
   for (let i = 0; i < 5; i++) await canvas.press('Shift+ArrowDown');
   assert.doesNotMatch(await section.locator('.pb-stability-reading').textContent(), /outside/);
   await canvas.press('Enter');
-  await page.waitForFunction((s) => document.querySelector(s).dataset.launched === '2', SECTION, { timeout: 30_000 });
+  await page.waitForFunction((s) => document.querySelector(s).dataset.launched === '2', SECTION);
   assert.deepEqual(problems, []);
 });
 
@@ -135,7 +135,6 @@ async function keplerSectionFor(factor) {
       return root?.dataset.factor === f && root.hasAttribute('data-ready');
     },
     [KEPLER, String(factor)],
-    { timeout: 120_000 },
   );
   return page.locator(KEPLER).evaluate((root) => ({ ...root.dataset, summary: root.querySelector('.pb-poincare-summary')?.textContent ?? '' }));
 }
@@ -169,7 +168,7 @@ test('a click in the Kepler section launches a chaotic orbit; a click outside th
   const canvas = section.locator('canvas');
   await section.scrollIntoViewIfNeeded();
   await canvas.click({ position: await pointIn(KEPLER, 1, 0.7, 0.1) });
-  await page.waitForFunction((s) => document.querySelector(s).dataset.launched === '1', KEPLER, { timeout: 60_000 });
+  await page.waitForFunction((s) => document.querySelector(s).dataset.launched === '1', KEPLER);
   assert.ok(Number(await section.getAttribute('data-exponent')) > 0.1);
   assert.match(await section.locator('.pb-stability-reading').textContent(), /chaotic/);
   await canvas.click({ position: await pointIn(KEPLER, 1, 0.8, 0.8) });
@@ -179,7 +178,7 @@ test('a click in the Kepler section launches a chaotic orbit; a click outside th
 
 test('editing the factor to isotropy closes every orbit, and the period and exponent checks agree', async () => {
   const before = await page.locator(`${KEPLER} canvas`).evaluate((c) => c.toDataURL());
-  const { keplerChecks: checks } = await editAndReadChecks(page, 'factor', 'factor = 1', ['keplerChecks'], { timeout: 120_000 });
+  const { keplerChecks: checks } = await editAndReadChecks(page, 'factor', 'factor = 1', ['keplerChecks']);
   const [energy, period, exponent] = KEPLER_CHECKS.map((label) => checks.find((c) => c.text.includes(label)));
   assertAgrees(energy);
   // Kepler's third law T = 2π√(m A³/k) with m = 1/(2a) = 1/4, A = k/(2|E|): the paper's own orbit, whose period is 2.9395.
@@ -202,7 +201,7 @@ test('editing the factor to isotropy closes every orbit, and the period and expo
 });
 
 test('the other isotropic factor makes the paper’s orbit a collision orbit: the period check says so; an unbound factor is refused in words', async () => {
-  const { keplerChecks: checks } = await editAndReadChecks(page, 'factor', 'factor = -1', ['keplerChecks'], { timeout: 120_000 });
+  const { keplerChecks: checks } = await editAndReadChecks(page, 'factor', 'factor = -1', ['keplerChecks']);
   const period = checks.find((c) => c.text.includes(KEPLER_CHECKS[1]));
   assert.equal(period.verdict, 'outside');
   assert.match(period.reason, /L = 0/);
@@ -212,7 +211,7 @@ test('the other isotropic factor makes the paper’s orbit a collision orbit: th
   await page.waitForFunction(() => {
     const shown = (id) => document.querySelector(`[data-cell="${id}"] [data-cell-error]`)?.textContent ?? '';
     return /unbound/.test(shown('keplerSection')) && /unbound/.test(shown('keplerRun'));
-  }, null, { timeout: 30_000 });
+  }, null);
   assert.match(await errorOf(page, 'keplerSection'), /E = .* ≥ 0/);
   await resetCell(page, 'factor');
   await keplerSectionFor(1.5);

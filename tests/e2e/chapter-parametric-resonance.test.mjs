@@ -141,7 +141,6 @@ test('editing u re-runs both checks, which still agree', async () => {
       return all.length === 2 && Math.abs(Number(all[0].dataset.predicted) - s) < 1e-12 && Math.abs(Number(all[1].dataset.predicted) - 0.7338) < 1e-3;
     },
     firstOrder(params),
-    { timeout: 20_000 },
   );
   assertChecks(await theoryChecks(page), params);
   await widgetsReady(page);

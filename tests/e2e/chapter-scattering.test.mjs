@@ -100,7 +100,6 @@ test('editing the field strength re-runs both checks, which still agree', async 
       return all.length === 2 && [...all].every((w) => w.hasAttribute('data-ready')) && all[0].dataset.predicted !== old && all[1].dataset.predicted !== String(2 * Math.atan(30 / 48));
     },
     String(before.predicted),
-    { timeout: 20_000 },
   );
   const after = await checks();
   assertChecks(after, 20);

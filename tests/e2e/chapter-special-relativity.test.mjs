@@ -83,7 +83,6 @@ test('editing the force re-runs the checks, which still agree (F = 2)', async ()
       return check && Math.abs(Number(check.getAttribute('data-predicted')) - expected) < 1e-12;
     },
     fastest,
-    { timeout: 20_000 },
   );
   await widgetsReady(page);
   await assertChecks(params);

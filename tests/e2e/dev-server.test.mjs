@@ -72,13 +72,13 @@ test('npm run dev serves a chapter, and an edit to its file shows in the open pa
   await page.getByRole('heading', { level: 1, name: 'Introduction' }).waitFor();
   // The chapter's cells run under the dev server too: brought into view (cells start near it), the simulator is there.
   await page.locator('[data-cell="sim"]').scrollIntoViewIfNeeded();
-  await page.locator('[data-cell="sim"] [data-widget="simulator"]').waitFor({ timeout: 120_000 });
+  await page.locator('[data-cell="sim"] [data-widget="simulator"]').waitFor();
 
   const edited = 'Hamilton describes it, as this edit says, by a single function';
   const text = await readFile(chapter, 'utf8');
   assert.ok(text.includes('Hamilton describes it\nby a single function'));
   await writeFile(chapter, text.replace('Hamilton describes it\nby a single function', edited));
   // No reload or navigation by the test: the dev server brings the edit to the page.
-  await page.waitForFunction((words) => document.querySelector('article, main')?.textContent.includes(words), edited, { timeout: 120_000 });
+  await page.waitForFunction((words) => document.querySelector('article, main')?.textContent.includes(words), edited);
   assert.equal(child.exitCode, null, 'the dev server is still the one started');
 });

@@ -77,7 +77,7 @@ test('code far from the view arrives plain, with all its text, and is coloured o
   // CodeMirror parses in slices of time, so its last tokens may come a little later on a busy machine: waited for.
   await page.evaluate(`window.shownCode = ${shownCode}`);
   const want = JSON.stringify(coloured.tokens);
-  await page.waitForFunction(([id, tokens]) => JSON.stringify(window.shownCode(id).tokens) === tokens, [last, want], { timeout: 10_000 }).catch(() => {});
+  await page.waitForFunction(([id, tokens]) => JSON.stringify(window.shownCode(id).tokens) === tokens, [last, want]).catch(() => {});
   assert.deepEqual((await page.evaluate(shownCode, last)).tokens, coloured.tokens);
   // The first view's code was coloured by the build.
   const first = await page.evaluate(() => document.querySelector('[data-cell]').id);

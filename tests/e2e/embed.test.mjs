@@ -72,10 +72,10 @@ test('from another origin: the embed loads its widget with its cells folded, rep
   const page = await site.context.newPage();
   const { problems } = watchPage(page);
   await page.goto(`${host.origin}/`);
-  await page.waitForFunction(() => window.fromBook.some((m) => m.type === 'phasebook:ready'), null, { timeout: 30_000 });
+  await page.waitForFunction(() => window.fromBook.some((m) => m.type === 'phasebook:ready'), null);
   const frame = page.frames().find((f) => f.url().startsWith(`${site.origin}${EMBED}`));
   assert.ok(frame, 'the iframe holds the embed page');
-  await frame.locator('[data-cell="sim"] [data-widget="simulator"][data-ready]').waitFor({ timeout: 30_000 });
+  await frame.locator('[data-cell="sim"] [data-widget="simulator"][data-ready]').waitFor();
 
   // One widget, the cells it reads present but folded, nothing else of the chapter.
   const [ready] = await received(page, 'phasebook:ready');
@@ -97,7 +97,6 @@ test('from another origin: the embed loads its widget with its cells folded, rep
         return heights.length > 0 && frame.style.height === `${heights.at(-1)}px` && heights.at(-1);
       },
       null,
-      { timeout: 15_000 },
     );
   await fits();
   const closedHeight = await frame.evaluate(() => document.documentElement.scrollHeight);
@@ -124,7 +123,6 @@ test('from another origin: the embed loads its widget with its cells folded, rep
       return sim && sim.model.params[sim.model.paramNames.indexOf('omega')] === 5 && sim.simulation.t > 0.5;
     },
     null,
-    { timeout: 60_000 },
   );
   const { data: state } = await page.evaluate(() => window.ask({ type: 'phasebook:get' }));
   assert.equal(state.type, 'phasebook:state');
@@ -176,9 +174,9 @@ test('the Embed button gives a snippet that, pasted into another site’s page, 
   await teacher.waitForFunction(() => {
     const last = window.fromBook.filter((m) => m.type === 'phasebook:height').at(-1);
     return last && document.querySelector('iframe').style.height === `${last.height}px`;
-  }, null, { timeout: 30_000 });
+  }, null);
   const frame = teacher.frames().find((f) => f.url().startsWith(`${site.origin}/embed/`));
-  await frame.locator('[data-cell="sim"] [data-widget="simulator"][data-ready]').waitFor({ timeout: 30_000 });
+  await frame.locator('[data-cell="sim"] [data-widget="simulator"][data-ready]').waitFor();
   // The reader's edit runs in the embed: the simulator starts from (1.5, 0).
   const { data: state } = await teacher.evaluate(() => window.ask({ type: 'phasebook:get' }));
   assert.deepEqual(state.cells.initial.value, [1.5, 0]);
@@ -193,7 +191,7 @@ test('the embed page: axe finds no violation, folded and unfolded, at 1100 and 3
   const { problems, requests } = watchPage(page);
   await page.goto(`${site.origin}${EMBED}`);
   await firstViewReady(page);
-  await page.locator('[data-cell="sim"] [data-widget="simulator"][data-ready]').waitFor({ timeout: 30_000 });
+  await page.locator('[data-cell="sim"] [data-widget="simulator"][data-ready]').waitFor();
   const scripts = requests.filter((url) => url.endsWith('.js'));
   const bytes = scripts.reduce((sum, url) => sum + gzipSync(readFileSync(join(DIST, new URL(url).pathname)), { level: 9 }).length, 0);
   t.diagnostic(`embed page JS: ${scripts.length} file(s), ${bytes} B gzip`);

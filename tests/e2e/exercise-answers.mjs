@@ -10,7 +10,7 @@ export const exercise = (page, id) => page.locator(`[data-exercise="${id}"]`);
 /** Scrolls to the exercise and waits until it is live. */
 export async function reach(page, id) {
   await exercise(page, id).scrollIntoViewIfNeeded();
-  await page.waitForSelector(`[data-exercise="${id}"][data-exercise-live] [data-exercise-feedback]`, { state: 'attached', timeout: 30_000 });
+  await page.waitForSelector(`[data-exercise="${id}"][data-exercise-live] [data-exercise-feedback]`, { state: 'attached' });
 }
 
 /** Runs `act`, then waits for the exercise's new verdict and returns its text and result. */
@@ -20,7 +20,7 @@ export async function verdictAfter(page, id, act) {
   await page.waitForFunction((target) => {
     const result = document.querySelector(`[data-exercise="${target}"]`)?.getAttribute('data-exercise-result');
     return result === 'passed' || result === 'failed' || (result === 'problem' && !/Checking/.test(document.querySelector(`[data-exercise="${target}"] [data-exercise-feedback]`)?.textContent ?? ''));
-  }, id, { timeout: 60_000 });
+  }, id);
   const root = exercise(page, id);
   return { result: await root.getAttribute('data-exercise-result'), text: (await root.locator('[data-exercise-feedback]').textContent()) ?? '' };
 }
@@ -41,6 +41,6 @@ export async function answerCode(page, id, cellName, source) {
   await typeIntoCell(page, cellName, source);
   // The check reads the cell's value as it is: wait until the edit has run (its value shown, or its error).
   const value = source.slice(source.indexOf('=') + 1).trim();
-  await waitForOutput(page, cellName, (out) => out.includes(value) || out === '', 10_000).catch(() => undefined);
+  await waitForOutput(page, cellName, (out) => out.includes(value) || out === '').catch(() => undefined);
   return verdictAfter(page, id, () => exercise(page, id).getByRole('button', { name: 'Check my code' }).click());
 }

@@ -132,7 +132,7 @@ test('"Check my code" grades the code the reader sees: a Run still compiling is 
     await check();
   });
   assert.equal(v.result, 'failed', v.text);
-  await waitForOutput(page, 'myH', (out) => out.includes('p^2/2 + 9*q^2/2'), 10_000);
+  await waitForOutput(page, 'myH', (out) => out.includes('p^2/2 + 9*q^2/2'));
   // Text that does not compile: the old code still runs, and the check says it is not grading it.
   v = await verdictAfter(page, 'oscillator-hamiltonian', async () => {
     await typeIntoCell(page, 'myH', 'myH = "p^2/4 + 9*q^2', { run: 'none' });
@@ -213,11 +213,11 @@ test('hints one at a time, the solution with a confirmation before any attempt, 
   assert.match((await root.locator('.exercise-solution').textContent()) ?? '', /2√2\/10|0\.283/);
   // The simulator's set-up changes the cells; the undo puts them back.
   await root.getByRole('button', { name: 'Show me in the simulator' }).click();
-  await waitForOutput(page, 'dt', (out) => out.includes('0.25'), 10_000);
-  await waitForOutput(page, 'params', (out) => /f: 0\b/.test(out), 10_000);
+  await waitForOutput(page, 'dt', (out) => out.includes('0.25'));
+  await waitForOutput(page, 'params', (out) => /f: 0\b/.test(out));
   await root.getByRole('button', { name: 'Undo: put the cells back' }).click();
-  await waitForOutput(page, 'dt', (out) => out.includes('0.0005'), 10_000);
-  await waitForOutput(page, 'params', (out) => /f: 20\b/.test(out), 10_000);
+  await waitForOutput(page, 'dt', (out) => out.includes('0.0005'));
+  await waitForOutput(page, 'params', (out) => /f: 20\b/.test(out));
   assert.equal(await cell(page, 'dt').locator('[data-cell-reset]').isDisabled(), true, 'the undone cell is the chapter’s again');
   await page.close();
 });

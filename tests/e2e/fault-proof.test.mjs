@@ -24,11 +24,10 @@ const PERIOD_OF = (omega) => `period = ${Number(((2 * Math.PI) / omega).toPrecis
 const simTime = (page) => page.evaluate((selector) => document.querySelector(selector)?.simulator.simulation.t ?? NaN, SIM);
 
 /** Waits until the error line of cell `id` matches `pattern`, and returns it. */
-async function waitForError(page, id, pattern, timeout = 15_000) {
+async function waitForError(page, id, pattern) {
   await page.waitForFunction(
     ([id, source, flags]) => new RegExp(source, flags).test(document.querySelector(`[data-cell="${id}"] [data-cell-error]`)?.textContent ?? ''),
     [id, pattern.source, pattern.flags],
-    { timeout },
   );
   return errorOf(page, id);
 }
@@ -252,11 +251,11 @@ test('two tabs: each hears of the other’s edit, and neither overwrites newer w
 test('dt = 1e-9 makes the theory checks fail within seconds, saying why, instead of computing for hours', async () => {
   const { page, problems } = await openChapter(site, '/introduction/');
   await typeIntoCell(page, 'dt', 'dt = 1e-9');
-  const line = await waitForError(page, 'driveLine', /steps/, 60_000);
+  const line = await waitForError(page, 'driveLine', /steps/);
   assert.match(line, /more than the 1e\+7 \(about a second of integration\) the book lets one cell compute: take a larger dt \(now 1e-9\)/);
   // Back to the default step, the checks agree again.
   await typeIntoCell(page, 'dt', 'dt = 5e-4');
-  await page.waitForFunction(() => document.querySelector('[data-cell="driveLine"] [data-cell-error]')?.hidden === true, null, { timeout: 60_000 });
+  await page.waitForFunction(() => document.querySelector('[data-cell="driveLine"] [data-cell-error]')?.hidden === true, null);
   assert.deepEqual(problems, []);
   await page.close();
 });
@@ -286,7 +285,7 @@ test('an H that takes 5 ms a call keeps the page answering: no frame integrates 
   const { page, problems } = await openChapter(site, '/playground/');
   // Opaque to the translator (it reads the clock), so 5-point differences: 32 calls, 160 ms, per RK 3/8 step.
   await typeIntoCell(page, 'H', 'H = (t, [q, p]) => {\n  const end = performance.now() + 5;\n  while (performance.now() < end) {}\n  return p * p / 2 + q * q / 2;\n}');
-  await page.waitForFunction((selector) => document.querySelector(selector)?.simulator?.model?.route === 'js-stencil' && document.querySelector(selector).hasAttribute('data-ready'), SIM, { timeout: 30_000 });
+  await page.waitForFunction((selector) => document.querySelector(selector)?.simulator?.model?.route === 'js-stencil' && document.querySelector(selector).hasAttribute('data-ready'), SIM);
   // Out of view a simulator pauses: the reader looks at it, and it plays.
   await page.evaluate((selector) => {
     const el = document.querySelector(selector);
@@ -305,7 +304,7 @@ test('an H that takes 5 ms a call keeps the page answering: no frame integrates 
   assert.ok(seen.timers.length >= 4 && Math.max(...seen.timers) <= 3, `steps integrated while a zero timeout waited: ${seen.timers.join(' ')}`);
   // And the page still answers a cell.
   await typeIntoCell(page, 'H0', 'H0 = 1 + 1');
-  await waitForOutput(page, 'H0', (text) => text === 'H0 = 2', 20_000);
+  await waitForOutput(page, 'H0', (text) => text === 'H0 = 2');
   assert.deepEqual(problems, []);
   await page.close();
 });
@@ -320,7 +319,6 @@ test('a batch of 100 000 trajectories starts, and draws a stated sample of 2000 
   await page.waitForFunction(
     (selector) => document.querySelector(selector)?.simulator?.simulation?.count === 100000 && document.querySelector(selector).hasAttribute('data-ready'),
     SIM,
-    { timeout: 60_000 },
   );
   // What the reader is told: the phase portrait draws 2000 of the trajectories, and says so.
   const phase = await page.evaluate((selector) => document.querySelector(`${selector} [data-widget="phase-portrait"] canvas`)?.getAttribute('aria-label') ?? '', SIM);
@@ -339,7 +337,7 @@ test('an expression H of 50 degrees of freedom builds in the compile worker, and
   // It froze the page for over 80 s: mathjs simplified each derivative, exponentially in the number of terms. The
   // build's work is linear in the degrees of freedom now (tests/unit/core/expression/model-build.test.ts counts
   // it), and it runs in the compile worker, off the page; here it must come within the wait's limit.
-  await page.waitForFunction((selector) => document.querySelector(selector)?.simulator?.model?.dof === 50 && document.querySelector(selector).hasAttribute('data-ready'), SIM, { timeout: 60_000 });
+  await page.waitForFunction((selector) => document.querySelector(selector)?.simulator?.model?.dof === 50 && document.querySelector(selector).hasAttribute('data-ready'), SIM);
   assert.ok(requests.some((url) => /compile-worker/.test(url)), 'the model was compiled in the worker');
   // Each degree of freedom is a unit oscillator from q = 1: q_i(t) = cos t, the closed form.
   const { t, q } = await page.evaluate((selector) => {

@@ -279,7 +279,7 @@ test('search works with the network cut once the box has opened, and says so whe
   await page.goto(`${site.origin}/introduction/`);
   await firstViewReady(page);
   await searchInput(page).focus();
-  await page.waitForSelector('form[data-search-held]', { state: 'attached', timeout: 20_000 });
+  await page.waitForSelector('form[data-search-held]', { state: 'attached' });
   await site.context.setOffline(true);
   try {
     for (const [query, chapter] of [['Lyapunov', '/order-and-chaos/'], ['adiabatic', '/adiabatic-invariants/'], ['Kepler', '/kepler/']]) {
@@ -317,7 +317,7 @@ test('search still works after a reader\'s edit has run and the sandbox has take
   assert.equal(await page.evaluate(() => typeof WebAssembly), 'object');
   await typeIntoCell(page, 'omega', 'omega = 5');
   await waitForOutput(page, 'omega', (text) => text === 'omega = 5');
-  await page.waitForFunction(() => typeof WebAssembly === 'undefined', null, { timeout: 15_000 });
+  await page.waitForFunction(() => typeof WebAssembly === 'undefined', null);
 
   await search(page, 'Lyapunov');
   assert.equal((await shownResults(page))[0]?.href, '/order-and-chaos/');

@@ -2,7 +2,7 @@
  * Shared set-up for the e2e test files: the built site on a local server and
  * a fresh headless Chromium, plus helpers that drive cells like a reader.
  */
-import { launchBrowser, watchPage, cellsReady, firstViewReady } from './browser.mjs';
+import { HANG_MS, launchBrowser, watchPage, cellsReady, firstViewReady } from './browser.mjs';
 import { startServer } from './server.mjs';
 
 export { cellsReady, firstViewReady, watchPage };
@@ -61,8 +61,8 @@ export async function errorOf(page, id) {
 }
 
 /** Waits until the output of cell `id` satisfies `predicate`. */
-export async function waitForOutput(page, id, predicate, timeout = 5000) {
-  const deadline = Date.now() + timeout;
+export async function waitForOutput(page, id, predicate) {
+  const deadline = Date.now() + HANG_MS;
   let last = '';
   while (Date.now() < deadline) {
     last = await outputOf(page, id);
@@ -84,7 +84,7 @@ export async function typeIntoCell(page, id, source, { run = 'keys' } = {}) {
   const root = cell(page, id);
   await root.locator('.cell-editor').click();
   const content = root.locator('.cm-content');
-  await content.waitFor({ timeout: 10_000 });
+  await content.waitFor();
   await content.click();
   await page.keyboard.press('ControlOrMeta+A');
   await page.keyboard.insertText(source);
@@ -98,7 +98,7 @@ export const addedCells = (page) => page.locator('[data-cell-added]');
 /** Types `source` into the newest added cell's editor, replacing what it holds, and runs it. */
 export async function typeIntoAddedCell(page, source) {
   const content = addedCells(page).last().locator('.cm-content');
-  await content.waitFor({ timeout: 10_000 });
+  await content.waitFor();
   await content.click();
   await page.keyboard.press('ControlOrMeta+A');
   await page.keyboard.insertText(source);
@@ -115,6 +115,5 @@ export async function landedOn(page, id) {
       return top >= -1 && top < innerHeight / 3;
     },
     id,
-    { timeout: 15_000 },
   );
 }

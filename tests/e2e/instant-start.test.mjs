@@ -209,7 +209,6 @@ describe('a new H in any chapter is compiled on the page, and the simulator foll
             (el) => el.simulator?.model?.source === hamiltonian && start.every((v, i) => Math.abs(el.simulator.simulation.initial[i] - v) <= 1e-12),
           ),
         [edit.hamiltonian, edit.truth(0, 0)],
-        { timeout: 60_000 },
       );
       // Let it run a little, then stop it and read where it is.
       await page.waitForTimeout(600);
@@ -230,7 +229,7 @@ describe('a new H in any chapter is compiled on the page, and the simulator foll
       assert.ok(heavyIn(requests).includes('mathjs'), 'the new H was compiled on the page');
       if (equationsBefore !== null) {
         // The chapter shows the new H's equations, typeset on the page with KaTeX.
-        await page.waitForFunction(equationsAfter, [edit.cell, equationsBefore], { timeout: 15_000 });
+        await page.waitForFunction(equationsAfter, [edit.cell, equationsBefore]);
         assert.ok(heavyIn(requests).includes('KaTeX'));
       }
       assert.deepEqual(problems, []);
@@ -277,7 +276,7 @@ describe('a link to a place in a chapter', () => {
     for (const wanted of ['simulator', 'plots', 'core', 'model', 'time-plot', 'plane-views']) assert.ok(early.includes(wanted), `${wanted} in ${early.join(', ')}`);
     assert.ok(!early.includes('spectrum'), 'the spectrum view, which this simulator does not show');
     release();
-    await page.locator('#cell-stars [data-widget="simulator"][data-ready]').waitFor({ timeout: 30_000 });
+    await page.locator('#cell-stars [data-widget="simulator"][data-ready]').waitFor();
     await page.close();
   });
 

@@ -80,7 +80,7 @@ async function assertEqualAspect(page, selector, expected) {
 const NEGATIVE_ZERO = /[−-]0(?:\.0+)?(?![\d.])/;
 
 /** Waits until the page's scroll position satisfies `predicate(scrollY)`. */
-const scrolled = (page, predicate, arg) => page.waitForFunction(predicate, arg, { timeout: 10_000 });
+const scrolled = (page, predicate, arg) => page.waitForFunction(predicate, arg);
 
 describe('on a desk, 1280 px', () => {
   /** @type {Awaited<ReturnType<typeof openSite>>} */
@@ -98,7 +98,7 @@ describe('on a desk, 1280 px', () => {
       el.simulator.setSpeed(50);
     });
     // A record of several windows (10 t each), then paused: the case where the wheel used to pan.
-    await page.waitForFunction((s) => document.querySelector(s).simulator.simulation.t > 40, SIM, { timeout: 120_000 });
+    await page.waitForFunction((s) => document.querySelector(s).simulator.simulation.t > 40, SIM);
     await sim.evaluate((el) => el.simulator.pause());
     const stage = sim.locator('[data-widget="time-plot"] .pb-stage');
     const live = sim.locator('[data-widget="time-plot"] .pb-scrub-row button', { hasText: 'Live' });
@@ -125,7 +125,7 @@ describe('on a desk, 1280 px', () => {
       // Shift, Ctrl and Alt with the vertical wheel; no key: a sideways wheel (a trackpad's swipe).
       await page.mouse.wheel(key ? 0 : -300, key ? -300 : 0);
       if (key) await page.keyboard.up(key);
-      await page.waitForFunction((b) => !b.disabled, await live.elementHandle(), { timeout: 30_000 });
+      await page.waitForFunction((b) => !b.disabled, await live.elementHandle());
       assert.equal(await page.evaluate(() => scrollY), before, `${key ?? 'a sideways'} wheel scrolled the page`);
     }
     assert.equal(await page.evaluate(() => visualViewport.scale), 1, 'Ctrl with the wheel zoomed the page');
@@ -178,7 +178,7 @@ describe('on a desk, 1280 px', () => {
     const sim = page.locator(SIM);
     await sim.waitFor();
     // Until the first simulator's pace has been judged: the whole of its start-up has been shown.
-    await page.waitForFunction((s) => document.querySelector(s)?.simulator?.driver.stats.pace != null, SIM, { timeout: 120_000 });
+    await page.waitForFunction((s) => document.querySelector(s)?.simulator?.driver.stats.pace != null, SIM);
     const texts = await page.evaluate(() => window.speedTexts);
     assert.ok(texts.length > 0 && texts.some((s) => /^1 t\/s · 2000 steps\/s$/.test(s.text)), JSON.stringify(texts.slice(0, 5)));
     // "behind" only once judged, and never in the first half time unit of a run.
@@ -248,7 +248,7 @@ describe('on a desk, 1280 px', () => {
     const playground = await openChapter(site, '/playground/');
     await typeIntoCell(playground.page, 'params', 'params = ({u: 0, gamma: 21.7, beta: 0.2, kappa: 8, omega: 10, f: 0})');
     await typeIntoCell(playground.page, 'options', "options = ({dt: 5e-4, speed: 1, views: ['spectrum'], spectrum: {theory: {frequency: 10 / (2 * PI), label: 'ω/2π'}}})");
-    await playground.page.waitForFunction(() => document.querySelector('[data-cell="sim"] [data-widget="simulator"]')?.querySelectorAll('[data-widget]').length === 1, null, { timeout: 30_000 });
+    await playground.page.waitForFunction(() => document.querySelector('[data-cell="sim"] [data-widget="simulator"]')?.querySelectorAll('[data-widget]').length === 1, null);
     const bare = await playground.page.locator('[data-cell="sim"] [data-widget="simulator"]').evaluate(collect, 0);
     assert.match(bare.last, /^strongest peak 1\.59\d* vs ω\/2π: 0\.00%$/, `at t = ${bare.t}`);
     assert.deepEqual(bare.texts.filter((t) => NEGATIVE_ZERO.test(t)), []);
@@ -277,7 +277,7 @@ describe('on a desk, 1280 px', () => {
       await playground.page.waitForFunction((s) => {
         const sim = document.querySelector('[data-cell="sim"] [data-widget="simulator"]:not([data-before])');
         return sim?.querySelector(s)?.axes?.length > 0 && sim.simulator.simulation.t > 1;
-      }, '[data-widget="phase-portrait"]', { timeout: 30_000 });
+      }, '[data-widget="phase-portrait"]');
     };
     await rerun("options = ({dt: 5e-4, speed: 1, views: ['phase'], phase: {equal: true}})");
     const [phase] = await assertEqualAspect(playground.page, selector, 1);

@@ -111,7 +111,7 @@ test('search loads nothing with a page, however long the reader stays; focusing 
   assert.deepEqual(scripts(requests).filter((url) => containsAny(url, ['searchHeld', 'phasebook-search'])), []);
 
   await page.locator('#site-search-input').focus();
-  await page.waitForSelector('form[data-search-held]', { state: 'attached', timeout: 20_000 });
+  await page.waitForSelector('form[data-search-held]', { state: 'attached' });
   const searchScripts = scripts(requests).filter(isSearch);
   assert.equal(searchScripts.filter((url) => /\/search\.[\w-]+\.js$/.test(url)).length, 1, 'the search module');
   assert.equal(searchScripts.filter((url) => /\/search-worker-[\w-]+\.js$/.test(url)).length, 1, 'its worker');
@@ -146,7 +146,7 @@ test('a link to a simulator fetches the simulator and its views, and no other wi
   const page = await site.context.newPage();
   const { problems, requests } = watchPage(page);
   await page.goto(`${site.origin}/kepler/#cell-stars`);
-  await page.locator('#cell-stars [data-widget="simulator"][data-ready]').waitFor({ timeout: 30_000 });
+  await page.locator('#cell-stars [data-widget="simulator"][data-ready]').waitFor();
   await page.waitForTimeout(500);
   const chunks = scripts(requests).map(chunkOf);
   for (const wanted of ['simulator', 'plots', 'time-plot', 'plane-views', 'model']) assert.ok(chunks.includes(wanted), `${wanted} in ${chunks.join(', ')}`);
@@ -181,8 +181,8 @@ async function firstViewScripts(url, simulator) {
   const page = await site.context.newPage();
   const { problems, requests } = watchPage(page);
   await page.goto(url);
-  await page.waitForSelector('body[data-cells-ready]', { state: 'attached', timeout: 30_000 });
-  if (simulator) await page.locator(`#${simulator} [data-widget="simulator"][data-ready]`).waitFor({ timeout: 30_000 });
+  await page.waitForSelector('body[data-cells-ready]', { state: 'attached' });
+  if (simulator) await page.locator(`#${simulator} [data-widget="simulator"][data-ready]`).waitFor();
   await page.waitForLoadState('networkidle');
   const loaded = scripts(requests);
   // Read before closing: closing aborts what is still in flight, which is no problem of the page's.

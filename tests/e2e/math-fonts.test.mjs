@@ -100,7 +100,7 @@ async function assertKatexFaces(session, count, what) {
 
 /** Opens `path` and checks the math in its first view, and the J matrix's delimiters if `tex` is given, in KaTeX's faces. */
 async function assertMathInKatexFaces(page, session, path, label, tex) {
-  await page.goto(server.origin + path, { waitUntil: 'load', timeout: 120_000 });
+  await page.goto(server.origin + path, { waitUntil: 'load' });
   await page.waitForSelector('.katex-html', { state: 'attached' });
   await fontsSettled(page);
   const inView = await page.evaluate(markMath, null);

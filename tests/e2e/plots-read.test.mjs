@@ -14,6 +14,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { after, before, test } from 'node:test';
+import { HANG_MS } from './browser.mjs';
 import { openChapter, openSite, typeIntoCell } from './fixture.mjs';
 import { plotAxes, plotProblems } from './plot-axes.mjs';
 
@@ -34,9 +35,9 @@ async function editRebuilding(page, id, source, selector) {
 /** Scrolls the simulator `selector` into view once it is rebuilt and ready (an edited cell replaces it). */
 async function showSimulator(page, selector) {
   for (let attempt = 0; ; attempt++) {
-    await page.waitForSelector(`${selector}[data-ready]:not([data-stale])`, { timeout: 30_000 });
+    await page.waitForSelector(`${selector}[data-ready]:not([data-stale])`);
     try {
-      await page.locator(`${selector}:not([data-stale])`).scrollIntoViewIfNeeded({ timeout: 5000 });
+      await page.locator(`${selector}:not([data-stale])`).scrollIntoViewIfNeeded();
       return;
     } catch (error) {
       if (attempt > 4) throw error;
@@ -46,8 +47,8 @@ async function showSimulator(page, selector) {
 }
 
 /** Waits until `predicate(axes of the plot)` holds, polling; returns the last axes. */
-async function waitForAxes(page, selector, predicate, timeout = 20_000) {
-  const deadline = Date.now() + timeout;
+async function waitForAxes(page, selector, predicate) {
+  const deadline = Date.now() + HANG_MS;
   let last;
   while (Date.now() < deadline) {
     last = await page.locator(selector).evaluate((el) => JSON.parse(JSON.stringify(el.axes)));
@@ -134,7 +135,7 @@ test('log y labels every decade of a growing motion (introduction, f = 0, γ = 2
   const plot = '[data-cell="sim"] [data-widget="time-plot"]';
   await showSimulator(page, '[data-cell="sim"] [data-widget="simulator"]');
   await page.locator(`${plot} button`, { hasText: 'log y' }).click();
-  const [axes] = await waitForAxes(page, plot, ([a]) => a.y.kind === 'symlog' && Math.max(...a.y.domain.map(Math.abs)) >= 1e3, 40_000);
+  const [axes] = await waitForAxes(page, plot, ([a]) => a.y.kind === 'symlog' && Math.max(...a.y.domain.map(Math.abs)) >= 1e3);
   const labels = axes.y.labels.map((l) => l.text);
   const top = Math.floor(Math.log10(Math.max(...axes.y.domain.map(Math.abs))) + 1e-9);
   const power = (k) => (k < 4 ? String(10 ** k) : `10${String(k).replace(/\d/g, (d) => '⁰¹²³⁴⁵⁶⁷⁸⁹'[d])}`);
@@ -184,7 +185,6 @@ test('every plot has a text alternative with its ranges and current values, rewr
       /strongest peak/.test(document.querySelector(`${selector} [data-widget="spectrum"] canvas`)?.getAttribute('aria-label') ?? '') &&
       document.querySelector(selector).simulator.simulation.t > 1,
     sim,
-    { timeout: 60_000 },
   );
   const texts = () =>
     page.locator(sim).evaluate((root) => {

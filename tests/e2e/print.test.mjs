@@ -120,7 +120,7 @@ test('beforeprint alone (Ctrl+P) draws each simulator on the page at once: the b
   await firstViewReady(page);
   const first = SIMULATORS[0];
   await cell(page, first).scrollIntoViewIfNeeded();
-  await cell(page, first).locator('[data-widget="simulator"]').waitFor({ state: 'attached', timeout: 60_000 });
+  await cell(page, first).locator('[data-widget="simulator"]').waitFor({ state: 'attached' });
   const times = await page.evaluate((name) => {
     const simulator = document.querySelector(`[data-cell="${name}"] [data-widget="simulator"]`).simulator;
     const before = simulator.simulation.t - simulator.simulation.t0;

@@ -24,7 +24,7 @@ async function openPlayground() {
   const watch = watchPage(page);
   await page.goto(`${site.origin}/playground/`);
   await cellsReady(page);
-  await page.waitForSelector(`${SIM}[data-ready]`, { timeout: 30_000 });
+  await page.waitForSelector(`${SIM}[data-ready]`);
   await inView(page);
   return { page, ...watch };
 }
@@ -60,7 +60,7 @@ function widget(page) {
 const markOld = (page) => page.evaluate((selector) => document.querySelector(selector)?.setAttribute('data-old', ''), SIM);
 
 /** Waits for a simulator created after markOld, drawn and satisfying `check` (run in the page on its handle). */
-async function waitForNewWidget(page, check = 'true', timeout = 20_000) {
+async function waitForNewWidget(page, check = 'true') {
   await inView(page);
   await page.waitForFunction(
     ({ selector, check }) => {
@@ -69,7 +69,6 @@ async function waitForNewWidget(page, check = 'true', timeout = 20_000) {
       return new Function('s', `return ${check};`)(el.simulator);
     },
     { selector: SIM, check },
-    { timeout },
   );
   // The new widget may have appeared elsewhere (cells above it re-laid out): out of view it would pause.
   await inView(page);
@@ -77,17 +76,16 @@ async function waitForNewWidget(page, check = 'true', timeout = 20_000) {
 
 /** Brings the simulator into view: one out of view pauses until it is seen. */
 async function inView(page) {
-  await page.waitForSelector(SIM, { timeout: 20_000 });
+  await page.waitForSelector(SIM);
   await page.evaluate((selector) => document.querySelector(selector)?.scrollIntoView({ block: 'center' }), SIM);
 }
 
 /** Resolves when simulated time has moved on by `dt` from `from`. */
-async function waitForTime(page, from, dt = 0.05, timeout = 10_000) {
+async function waitForTime(page, from, dt = 0.05) {
   await inView(page);
   return page.waitForFunction(
     ({ selector, target }) => document.querySelector(selector)?.simulator.simulation.t >= target,
     { selector: SIM, target: from + dt },
-    { timeout },
   );
 }
 
@@ -107,7 +105,6 @@ test('a blow-up pauses the widget with a message naming t and the component; the
       return !document.querySelector(`${selector} .pb-alert`)?.hidden;
     },
     SIM,
-    { timeout: 15_000 },
   );
   const stopped = await widget(page);
   const match = /^Stopped: the state became (-?Infinity|NaN) at t = ([\d.e-]+) in (q|p);.*Restart, or try a smaller dt\.$/.exec(stopped.alert);
@@ -144,7 +141,7 @@ test('a blow-up pauses the widget with a message naming t and the component; the
   await typeIntoCell(page, 'dof', 'dof = 4');
   await typeIntoCell(page, 'initial', 'initial = [0, 0, 0, 0, 2, -3, -2, 3]');
   await waitForNewWidget(page, 's.model.dof === 4');
-  await page.waitForFunction((selector) => !document.querySelector(`${selector} .pb-alert`)?.hidden, SIM, { timeout: 10_000 });
+  await page.waitForFunction((selector) => !document.querySelector(`${selector} .pb-alert`)?.hidden, SIM);
   const met = await widget(page);
   assert.match(met.alert, /^Stopped: the state became NaN at t = 0\.0005 in q0;/);
   assert.equal(met.playing, false);
@@ -176,7 +173,7 @@ test('a slow H cannot freeze the page: frames keep coming and the speed readout 
   assert.ok(Math.max(...steps) <= mostStepsInAFrame(seen), `steps per frame: ${steps.join(' ')}`);
   // The speed readout (steps a frame ÷ real time, a frame's time counted up to 100 ms) says it is behind: the
   // budget cut the frames. Had frames integrated all they were owed, it would read 100 %.
-  await page.waitForFunction((selector) => /behind real time/.test(document.querySelector(`${selector} .pb-speed-text`)?.textContent ?? ''), SIM, { timeout: 20_000 });
+  await page.waitForFunction((selector) => /behind real time/.test(document.querySelector(`${selector} .pb-speed-text`)?.textContent ?? ''), SIM);
   const later = await widget(page);
   const behind = /behind real time, (\d+)%/.exec(later.speedText);
   assert.ok(behind && Number(behind[1]) < 90, later.speedText);
@@ -195,7 +192,7 @@ test('with a small capacity the widget says that old samples are dropped', async
   await markOld(page);
   await typeIntoCell(page, 'options', "options = ({speed: 1, capacity: 500, views: ['time']})");
   await waitForNewWidget(page, 's.simulation.record.capacity === 500');
-  await page.waitForFunction((selector) => !document.querySelector(`${selector} .pb-note`)?.hidden, SIM, { timeout: 10_000 });
+  await page.waitForFunction((selector) => !document.querySelector(`${selector} .pb-note`)?.hidden, SIM);
   const state = await widget(page);
   assert.match(state.note, /^The record is full: it keeps the latest 500 samples \(from t = [\d.]+\) and has dropped [\d,]+ older ones; scrolling back and downloads start there\.$/);
   assert.equal(state.rows, 500);

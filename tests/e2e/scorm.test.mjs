@@ -175,11 +175,11 @@ test('inside a test LMS under /lms/course-7/sco-3/, two solved exercises reach t
       for (;;) {
         const found = page.frames().find((f) => f.url().endsWith(`${SCO}${LAUNCH}`));
         if (found) return found;
-        await page.waitForEvent('framenavigated', { timeout: 30_000 });
+        await page.waitForEvent('framenavigated');
       }
     })();
-    await frame.waitForSelector('body[data-cells-ready]', { state: 'attached', timeout: 60_000 });
-    await page.waitForFunction(() => window.transcript.some(([name]) => name === 'LMSInitialize'), null, { timeout: 30_000 });
+    await frame.waitForSelector('body[data-cells-ready]', { state: 'attached' });
+    await page.waitForFunction(() => window.transcript.some(([name]) => name === 'LMSInitialize'), null);
     const exercises = await frame.locator('[data-exercise]').count();
     assert.ok(exercises >= 2, 'the chapter has exercises');
 
@@ -189,7 +189,7 @@ test('inside a test LMS under /lms/course-7/sco-3/, two solved exercises reach t
     assert.equal(drive.result, 'passed', drive.text);
 
     const expected = String(Math.round((10_000 * 2) / exercises) / 100);
-    await page.waitForFunction((score) => window.API.cmi.core.score.raw === score, expected, { timeout: 30_000 });
+    await page.waitForFunction((score) => window.API.cmi.core.score.raw === score, expected);
     const lms = await page.evaluate(() => ({
       raw: window.API.cmi.core.score.raw,
       min: window.API.cmi.core.score.min,
@@ -211,7 +211,7 @@ test('inside a test LMS under /lms/course-7/sco-3/, two solved exercises reach t
 
     // Leaving the chapter finishes the session.
     await page.evaluate(() => document.querySelector('iframe').remove());
-    await page.waitForFunction(() => window.transcript.some(([name]) => name === 'LMSFinish'), null, { timeout: 30_000 });
+    await page.waitForFunction(() => window.transcript.some(([name]) => name === 'LMSFinish'), null);
     console.log(`The LMS received (${exercises} exercises in the chapter):`);
     for (const call of await page.evaluate(() => window.transcript)) console.log(`  ${call[0]}(${call.slice(1).map((v) => `'${v}'`).join(', ')})`);
     console.log(`  cmi.core.score.raw = ${lms.raw}, score.min = ${lms.min}, score.max = ${lms.max}, lesson_status = ${lms.status} (before LMSFinish)`);
@@ -234,7 +234,7 @@ test('an LMS that refuses values is told of once, politely, in the page, and the
   const watch = watchPage(page);
   try {
     await page.goto(`${server.origin}/lms/refusing.html`);
-    await page.waitForFunction(() => window.calls > 0, null, { timeout: 60_000 });
+    await page.waitForFunction(() => window.calls > 0, null);
     const frame = page.frames().find((f) => f.url().endsWith(`${SCO}${LAUNCH}`));
     assert.ok(frame);
     const period = await answer(frame, 'period-at-omega-5', String((2 * Math.PI) / 5));
@@ -255,7 +255,7 @@ test('the launch page opened on its own, with no LMS, grades an exercise and say
   const watch = watchPage(page);
   try {
     await page.goto(`${server.origin}${SCO}${LAUNCH}`);
-    await page.waitForSelector('body[data-cells-ready]', { state: 'attached', timeout: 60_000 });
+    await page.waitForSelector('body[data-cells-ready]', { state: 'attached' });
     const drive = await answer(page, 'drive-line', String(8 / (2 * Math.PI)));
     assert.equal(drive.result, 'passed', drive.text);
     assert.equal(await exercise(page, 'drive-line').getAttribute('data-exercise-state'), 'solved');

@@ -20,7 +20,6 @@ export async function search(page, query) {
   await page.waitForFunction(
     (q) => document.querySelector('[data-search-status]')?.textContent?.includes(`“${q}”`),
     query,
-    { timeout: 20_000 },
   );
   return (await status.textContent()) ?? '';
 }

@@ -66,7 +66,7 @@ async function share(page) {
   await page.locator('[data-share-button]').focus();
   await page.keyboard.press('Enter');
   const field = page.locator('[data-share-link]');
-  await field.waitFor({ timeout: 5000 });
+  await field.waitFor();
   const url = await field.inputValue();
   assert.equal(await page.locator('[data-share-length]').textContent(), `${url.length} characters`);
   return url;
@@ -137,7 +137,7 @@ test('in a fresh profile the link shows the edits, marked, runs none of their co
   assert.equal(new URL(page.url()).hash, new URL(link).hash);
 
   await banner(page).locator('[data-share-run]').click();
-  await waitForOutput(page, 'H0', (text) => text === H0({ omega: 12, quartic: true }), 10_000);
+  await waitForOutput(page, 'H0', (text) => text === H0({ omega: 12, quartic: true }));
   await page.waitForFunction(() => document.querySelector('[data-cell-added] [data-cell-output]')?.textContent === 'mine = 24');
   assert.equal(await page.evaluate(() => window.sharedCodeRan), true);
   assert.equal(await banner(page).locator('[data-share-run]').count(), 0);
@@ -192,14 +192,14 @@ test('Keep these edits asks before replacing the reader’s own saved edits, and
   assert.deepEqual(await editKeys(), own);
 
   await banner(page).locator('[data-share-run]').click();
-  await waitForOutput(page, 'H0', (text) => text === H0({ omega: 12, quartic: true }), 10_000);
+  await waitForOutput(page, 'H0', (text) => text === H0({ omega: 12, quartic: true }));
   await banner(page).locator('[data-share-keep]').click();
   await confirm.locator('[data-share-replace]').click();
   await page.waitForURL(`${site.origin}/playground/`);
   await cellsReady(page);
   // Now the reader's: they ran, so they run; their own edit of initial is gone.
   assert.equal(await banner(page).isVisible(), false);
-  await waitForOutput(page, 'H0', (text) => text === H0({ omega: 12, quartic: true }), 10_000);
+  await waitForOutput(page, 'H0', (text) => text === H0({ omega: 12, quartic: true }));
   assert.equal(await outputOf(page, 'initial'), 'initial = [2, 0]');
   await page.waitForFunction(() => document.querySelector('[data-cell-added] [data-cell-output]')?.textContent === 'mine = 24');
   assert.equal((await savedKeys(page)).filter((key) => key.endsWith(':edit:initial')).length, 0);

@@ -41,8 +41,8 @@ async function moveToWorker(page) {
 }
 
 /** Waits until the simulator integrates in the worker. */
-async function waitForWorker(page, timeout = 20_000) {
-  await page.waitForFunction((selector) => document.querySelector(selector)?.simulator?.driver.integrator === 'worker', SIM, { timeout });
+async function waitForWorker(page) {
+  await page.waitForFunction((selector) => document.querySelector(selector)?.simulator?.driver.integrator === 'worker', SIM);
 }
 
 test('a batch of 100 000 trajectories integrates in the worker: the page integrates none of it, frames keep coming, and time advances', async () => {
@@ -52,7 +52,6 @@ test('a batch of 100 000 trajectories integrates in the worker: the page integra
   await page.waitForFunction(
     (selector) => document.querySelector(selector)?.simulator?.simulation?.count === 100000 && document.querySelector(selector).hasAttribute('data-ready'),
     SIM,
-    { timeout: 60_000 },
   );
   await playInView(page);
   await waitForWorker(page);
@@ -152,7 +151,7 @@ test('a JS-function H the translator cannot read still runs on the page, within 
   const { page, problems } = await openChapter(site, '/playground/');
   // A loop makes H opaque: 5-point differences, a function of the page that no worker can have.
   await typeIntoCell(page, 'H', 'H = (t, [q, p]) => {\n  let s = 0;\n  for (let i = 0; i < 3; i++) s += (p * p + 100 * q * q) / 6;\n  return s;\n}');
-  await page.waitForFunction((selector) => document.querySelector(selector)?.simulator?.model?.route === 'js-stencil', SIM, { timeout: 30_000 });
+  await page.waitForFunction((selector) => document.querySelector(selector)?.simulator?.model?.route === 'js-stencil', SIM);
   await page.waitForSelector(`${SIM}[data-ready]`);
   await playInView(page);
   const seen = await watchFrames(page, SIM, 60);
@@ -227,12 +226,12 @@ test('a blow-up in the worker stops the simulator with the same message as on th
   // (energy conservation; the integral by quadrature), time enough for the worker to take over first.
   await typeIntoCell(page, 'initial', 'initial = [0.4, 0]');
   await typeIntoCell(page, 'H', 'H = "p^2/2 - q^6"');
-  await page.waitForFunction((selector) => document.querySelector(selector)?.simulator?.model?.source === 'p^2/2 - q^6', SIM, { timeout: 30_000 });
+  await page.waitForFunction((selector) => document.querySelector(selector)?.simulator?.model?.source === 'p^2/2 - q^6', SIM);
   await page.waitForSelector(`${SIM}[data-ready]`);
   await moveToWorker(page);
   await playInView(page);
   await waitForWorker(page);
-  await page.waitForFunction((selector) => document.querySelector(selector).simulator.simulation.error, SIM, { timeout: 15_000 });
+  await page.waitForFunction((selector) => document.querySelector(selector).simulator.simulation.error, SIM);
   const { message, reference, alert } = await page.evaluate((selector) => {
     const handle = document.querySelector(selector).simulator;
     const sim = handle.simulation;
@@ -257,7 +256,7 @@ test('where no worker can run, the simulator integrates on the page as before', 
   const { problems, requests } = watchPage(page);
   await page.goto(`${site.origin}/playground/`);
   await cellsReady(page);
-  await page.waitForSelector(`${SIM}[data-ready]`, { timeout: 30_000 });
+  await page.waitForSelector(`${SIM}[data-ready]`);
   await playInView(page);
   const t0 = await page.evaluate((selector) => document.querySelector(selector).simulator.simulation.t, SIM);
   await page.waitForTimeout(1000);

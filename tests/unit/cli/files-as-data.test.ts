@@ -163,7 +163,7 @@ describe('damaged files, said with their names', () => {
     expect(exit.stderr).toBe(`phasebook: ${shard} line 5: data row 1 has 4 values, expected 5\n`);
     expect(existsSync(out)).toBe(false);
     expect(partials()).toEqual([]);
-  }, 30_000);
+  });
 
   it.each(['merge', 'reproduce'])('%s refuses an NPZ with one bit of x flipped, by its CRC: one line naming the file, status 2, no output', async (command) => {
     for (const i of [1, 2]) await simulate(['--hamiltonian', 'p^2/2 + q^2/2', ...SET, '--shard', `${i}/2`, '--output', join(scratch, `s${i}.npz`)]);

@@ -50,8 +50,14 @@ export function grow(domain: Domain, lo: number, hi: number, kind: SignedKind): 
   return fit(Math.min(lo, domain[0]), Math.max(hi, domain[1]), kind, GROWTH_HEADROOM);
 }
 
-/** How much of a range the data may leave empty before a settled plot fits it again. */
-export const SETTLE_RATIO = 0.8;
+/**
+ * A settled plot fits its data again once their fitted range is under this share of the range shown. Growth
+ * leaves headroom on the side that grew, and how much depends on how the first frames cut the data (a busy
+ * machine draws fewer, larger chunks): at 0.8, the nonlinear oscillator's q in [−0.96, 1] could stay on
+ * [−1, 1.7], a quarter of it empty, where a quiet machine showed [−1.1, 1.1]. At 0.9 a settled plot leaves at
+ * most a tenth empty beyond its fit's padding, and a fit that is already snug is still left alone.
+ */
+export const SETTLE_RATIO = 0.9;
 
 /**
  * The fitted range of data [lo, hi] when it is much tighter than `domain`

@@ -38,6 +38,11 @@ describe('plots/autoscale', () => {
     expect(settled[1]).toBeGreaterThanOrEqual(1);
     expect(settled[1] - settled[0]).toBeLessThan(2.5);
     expect(settle(settled, -1.04, 1, 'linear')).toBeNull();
+    // the range a busy machine's first frames left it on: a quarter empty above the data, and refitted
+    const busy = settle([-1, 1.7], -0.96, 1, 'linear')!;
+    expect(busy[0]).toBeLessThanOrEqual(-0.96);
+    expect(busy[1]).toBeGreaterThanOrEqual(1);
+    expect(1.96 / (busy[1] - busy[0])).toBeGreaterThanOrEqual(0.8);
     expect(settle([-1.2, 1.2], -1.04, 1, 'linear')).toBeNull();
     expect(settle([-1e4, 1e4], -5, 7, 'symlog')).not.toBeNull();
     expect(settle([-1, 1], NaN, NaN, 'linear')).toBeNull();
