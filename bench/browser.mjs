@@ -26,7 +26,7 @@
  * BENCH_ONLY=cold runs part e alone, BENCH_ONLY=first part f alone,
  * BENCH_ONLY=lighthouse part g alone (BENCH_LIGHTHOUSE_RUNS=N: the median of
  * N runs per page and preset); BENCH_PAGES=/introduction/,/kepler/ limits
- * parts e and f to those pages; BENCH_LOADS sets the loads per page and
+ * parts e, f and g to those pages; BENCH_LOADS sets the loads per page and
  * profile (default 3; the median is reported).
  * Builds the site first when dist/ (or PHASEBOOK_OUT_DIR) has none.
  * BENCH_SECONDS sets the measuring window per scenario (default 4 s, after a
@@ -554,7 +554,7 @@ async function main() {
     if (!ONLY || ONLY === 'lighthouse') {
       print('g. Lighthouse, every page.');
       print();
-      await lighthouseTable(server.origin, sitePages(), { print, log });
+      await lighthouseTable(server.origin, measuredPages(), { print, log });
     }
     if (!ONLY || ONLY === 'first') {
       // One browser at a time: the shared one is closed before the first visits start their own.

@@ -54,9 +54,9 @@ export const HONESTY = 'Checked in your browser, for learning, not for exams: th
 
 /**
  * @param {import('../../widgets/index.ts').Exercise} exercise
- * @returns {import('hast').Element}
+ * @returns {Promise<import('hast').Element>}
  */
-export function renderExercise(exercise) {
+export async function renderExercise(exercise) {
   const { id } = exercise;
   const rendered = {
     ...sealedPart(exercise),
@@ -64,7 +64,7 @@ export function renderExercise(exercise) {
     solution: inlineHtml(exercise.solution),
   };
   const html = `<section class="exercise" id="exercise-${id}" data-exercise="${id}" data-exercise-kind="${exercise.kind}"`
-    + ` data-exercise-public="${escapeHtml(JSON.stringify(publicPart(exercise)))}" data-exercise-sealed="${seal(rendered, id)}" aria-labelledby="exercise-${id}-title">`
+    + ` data-exercise-public="${escapeHtml(JSON.stringify(publicPart(exercise)))}" data-exercise-sealed="${await seal(rendered, id)}" aria-labelledby="exercise-${id}-title">`
     + `<p class="exercise-head" id="exercise-${id}-title"><span class="exercise-kind">${KIND_NAMES[exercise.kind]}</span> <strong>${escapeHtml(exercise.title)}</strong></p>`
     + `<div class="exercise-prompt">${inlineHtml(exercise.prompt)}</div>`
     + '<div class="exercise-body" data-exercise-body><noscript><p>This exercise checks your answer in the page: turn on JavaScript to use it.</p></noscript></div>'
@@ -90,9 +90,11 @@ export function remarkExercises() {
    * @param {import('mdast').Root} tree
    * @param {import('vfile').VFile} file
    */
-  return (tree, file) => {
+  return async (tree, file) => {
     /** @type {Set<string>} */
     const ids = new Set();
+    /** @type {Promise<void>[]} */
+    const rendering = [];
     const chapter = file.path ? shownPath(file.path) : '(chapter)';
     /** @type {string[]} */
     const problems = [];
@@ -103,19 +105,22 @@ export function remarkExercises() {
         : truthProblem(parsed.exercise);
       // Every id read counts, even one whose exercise has another problem: progress is kept by id.
       if (!('error' in parsed)) ids.add(parsed.exercise.id);
-      let element;
+      /** @param {import('hast').Element} element */
+      const place = (element) => {
+        parent.children[index] = /** @type {import('mdast').RootContent} */ (/** @type {unknown} */ ({
+          type: 'exercise',
+          data: { hName: element.tagName, hProperties: element.properties, hChildren: element.children },
+        }));
+      };
       if (problem) {
         file.message(`exercise: ${problem}`, node);
         problems.push(`${chapter}:${node.position?.start.line ?? 0}: exercise${'error' in parsed ? '' : ` ${parsed.exercise.id}`}: ${problem}`);
-        element = renderError(problem);
+        place(renderError(problem));
       } else {
-        element = renderExercise(/** @type {{ exercise: import('../../widgets/index.ts').Exercise }} */ (parsed).exercise);
+        rendering.push(renderExercise(/** @type {{ exercise: import('../../widgets/index.ts').Exercise }} */ (parsed).exercise).then(place));
       }
-      parent.children[index] = /** @type {import('mdast').RootContent} */ (/** @type {unknown} */ ({
-        type: 'exercise',
-        data: { hName: element.tagName, hProperties: element.properties, hChildren: element.children },
-      }));
     });
+    await Promise.all(rendering);
     // An exercise that cannot be read or graded would fail every reader: the build fails (fail-loudly.mjs).
     reportChapter(chapter, problems, 'exercises');
   };

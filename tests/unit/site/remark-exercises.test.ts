@@ -25,7 +25,7 @@ const periodExercise = (id: string, truth: { name: string; args: Record<string, 
 async function build(path: string, text: string) {
   const file = new VFile({ path, value: text });
   const tree = unified().use(remarkParse).use(remarkMdx).parse(file);
-  (remarkExercises() as unknown as (tree: unknown, file: VFile) => void)(tree, file);
+  await (remarkExercises() as unknown as (tree: unknown, file: VFile) => Promise<void>)(tree, file);
   return { tree: tree as unknown as { children: { type: string; data?: { hProperties?: Record<string, unknown> } }[] }, problems: recordedProblems() };
 }
 

@@ -71,13 +71,14 @@ export function startExercise(root: HTMLElement, host: ExerciseHost): void {
   const body = root.querySelector<HTMLElement>('[data-exercise-body]');
   const info = JSON.parse(root.dataset.exercisePublic ?? 'null') as PublicExercise | null;
   if (!body || !info) return;
-  let sealed: SealedParts;
-  try {
-    sealed = unseal(root.dataset.exerciseSealed ?? '', info.id) as SealedParts;
-  } catch {
-    body.replaceChildren(element('p', { className: 'exercise-problem', textContent: 'This exercise’s answer could not be read from the page (it was damaged in transit): reload the page.' }));
-    return;
-  }
+  unseal(root.dataset.exerciseSealed ?? '', info.id).then(
+    (sealed) => buildExercise(root, body, info, sealed as SealedParts, host),
+    () => body.replaceChildren(element('p', { className: 'exercise-problem', textContent: 'This exercise’s answer could not be read from the page (it was damaged in transit): reload the page.' })),
+  );
+}
+
+/** Builds a live exercise in `body` from what the page shows openly and what it sealed. */
+function buildExercise(root: HTMLElement, body: HTMLElement, info: PublicExercise, sealed: SealedParts, host: ExerciseHost): void {
   const id = info.id;
   const feedback = element('div', { className: 'exercise-feedback' });
   feedback.setAttribute('role', 'status');
