@@ -209,3 +209,22 @@ test('every chapter stays within the JavaScript budgets: its top ≤ 29 KB, a li
   }
   assert.deepEqual(over, []);
 });
+
+/**
+ * The page itself, gzip level 9: a phone on Slow 4G (50 KB/s) takes a second per 50 KB of it before the page is
+ * whole. The prose, its typeset math and the cells' data make 50–60 KB of a chapter; exercises' sealed parts,
+ * scrambled bytes that gzip cannot shrink, made 40–60 % more (175 KB on /order-and-chaos/) until they were
+ * deflated before sealing (widgets/chapter/exercise/seal.ts).
+ */
+const PAGE_BUDGET = 90 * 1024;
+
+test('every page stays within the page budget: its HTML ≤ 90 KB gzip', (t) => {
+  const over = [];
+  for (const path of pages()) {
+    const bytes = gzipSync(readFileSync(join(DIST, path, 'index.html')), { level: 9 }).length;
+    t.diagnostic(`${path}: ${(bytes / 1024).toFixed(1)} KB`);
+    if (bytes > PAGE_BUDGET) over.push(`${path} ${(bytes / 1024).toFixed(1)} KB`);
+  }
+  assert.ok(pages().length >= 12);
+  assert.deepEqual(over, []);
+});
