@@ -58,6 +58,29 @@ export { completeEllipticK, pendulumPeriod } from './analysis/pendulum.ts';
 export { rk4Amplification, rk4StabilityLimit } from './analysis/rk-stability.ts';
 export { turningPoint, wellPeriod } from './analysis/well-period.ts';
 export { collinearQuintics, effectivePotential, jacobiConstant, type LagrangePoint, lagrangePoints, ROUTH_MU, triangularModes, type TriangularModes, zeroVelocityCurve } from './analysis/three-body.ts';
+export {
+  acceleratorMode,
+  besselJ,
+  CHIRIKOV_OVERLAP,
+  type DiffusionMeasure,
+  GREENE_K,
+  type GreeneLevel,
+  greeneLevels,
+  type GreeneOrbit,
+  greeneOrbit,
+  greeneResidueAt,
+  measureDiffusion,
+  nearAcceleratorMode,
+  orbitReading,
+  type OrbitReading,
+  quasilinearDiffusion,
+  rechesterWhiteDiffusion,
+  rechesterWhiteRemainder,
+  residue,
+} from './analysis/standard-map.ts';
+export { type AreaPreservingMap, TWO_PI, wrapAngle } from './maps/area-preserving-map.ts';
+export { iterateMap, MAX_ITERATES, mapRecord } from './maps/map-iteration.ts';
+export { standardMap } from './maps/standard-map.ts';
 export { type ExponentialGrowth, exponentialGrowth } from './analysis/exponential-growth.ts';
 export { chaoticArea, type ChaoticArea, sectionBox } from './analysis/poincare-area.ts';
 export { allowed, launchState, type Plane, planeIndices, section } from './analysis/poincare.ts';
