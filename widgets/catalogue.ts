@@ -37,6 +37,7 @@ export const WIDGET_NAMES: readonly string[] = [
   'stabilityChart',
   'poincareSection',
   'methodComparison',
+  'standardMap',
 ];
 
 /**
@@ -72,6 +73,7 @@ export function createLibrary(page: PageContext, cellSignal: () => AbortSignal |
   const invariants = () => import('../core/invariants.ts');
   const analysis = () => import('./chapter/analysis/analysis.ts');
   const threeBody = () => import('../core/analysis/three-body.ts');
+  const standardMapAnalysis = () => import('../core/analysis/standard-map.ts');
   const typesetting = () => import('./chapter/math/tex.ts').then((m) => m.typesetting(page.typeset));
   // New models compile in a worker (chapter/models/compile-worker.ts), reporting progress; an edit that supersedes the cell cancels its build.
   const build = (): BuildOptions => ({
@@ -130,6 +132,30 @@ export function createLibrary(page: PageContext, cellSignal: () => AbortSignal |
     effectivePotential: () => threeBody().then((m) => m.effectivePotential),
     /** zeroVelocityCurve(mu, C, {half, n, coarse}) → {curve, forbidden}: points of 2Ω = C and grid points where 2Ω < C */
     zeroVelocityCurve: () => threeBody().then((m) => m.zeroVelocityCurve),
+    /** standardMap({K, kMax, orbits, iterations, height, onLaunch}) → the standard map p' = p + K sin q, q' = q + p' on the torus, redrawn as K moves; click to launch an orbit and read its rotation number and Lyapunov exponent */
+    standardMap: () => import('./chapter/standard-map/standard-map.ts').then((m) => m.standardMap),
+    /** greeneLevels(depth, first) → [{level, m, n, K}]: for each Fibonacci orbit m/n, the K at which its residue is 1/4 (Greene's criterion for the golden circle) */
+    greeneLevels: () => standardMapAnalysis().then((m) => m.greeneLevels),
+    /** greeneK: 0.971635406, the K at which the standard map's last invariant circle breaks (Greene 1979, MacKay 1983) */
+    greeneK: () => standardMapAnalysis().then((m) => m.GREENE_K),
+    /** measureDiffusion(K, {orbits, iterations, seed}) → {D, standardError, halfRunD, orbits, iterations}: ⟨(p_n − p_0)²⟩/n over orbits from random points of the torus */
+    measureDiffusion: () => standardMapAnalysis().then((m) => m.measureDiffusion),
+    /** quasilinearDiffusion(K) → K²/2, the diffusion of p for independent phases */
+    quasilinearDiffusion: () => standardMapAnalysis().then((m) => m.quasilinearDiffusion),
+    /** rechesterWhiteDiffusion(K) → (K²/2)[1 − 2J₂ − 2J₁² + 2J₂² + 2J₃²] (Rechester & White 1980) */
+    rechesterWhiteDiffusion: () => standardMapAnalysis().then((m) => m.rechesterWhiteDiffusion),
+    /** rechesterWhiteRemainder(K) → 6(2/πK)^{3/2}: the terms Rechester and White leave out, as a fraction of K²/2 */
+    rechesterWhiteRemainder: () => standardMapAnalysis().then((m) => m.rechesterWhiteRemainder),
+    /** acceleratorMode(K) → m ≥ 1 when 2πm ≤ K ≤ √((2πm)² + 16), where islands carry p by 2πm a kick; else 0 */
+    acceleratorMode: () => standardMapAnalysis().then((m) => m.acceleratorMode),
+    /** nearAcceleratorMode(K) → whether K is in or near an accelerator band, where sticky islands bias the diffusion */
+    nearAcceleratorMode: () => standardMapAnalysis().then((m) => m.nearAcceleratorMode),
+    /** chirikovOverlap: {primary: π²/4, withSecondary: (√(4 + 2π) − 2)²}, Chirikov's overlap estimates of the last circle's breakup */
+    chirikovOverlap: () => standardMapAnalysis().then((m) => m.CHIRIKOV_OVERLAP),
+    /** besselJ(n, x) → the Bessel function J_n(x) of integer order */
+    besselJ: () => standardMapAnalysis().then((m) => m.besselJ),
+    /** orbitReading(K, [q, p], iterations) → {rotation, lyapunov, pMin, pMax, crossed} of a standard-map orbit */
+    orbitReading: () => standardMapAnalysis().then((m) => m.orbitReading),
     /** exponentialGrowth(t, size, from, to) → {rate, bound, span, samples}: the rate a of a size growing as e^{at} times an oscillation, from a line through ln(size), with the bound the oscillation puts on it */
     exponentialGrowth: () => import('../core/analysis/exponential-growth.ts').then((m) => m.exponentialGrowth),
 

@@ -56,6 +56,8 @@ const GROUPS = [
   [/^widgets\/simulator\/(worker-integrator|chunk-protocol|portable-model)\.ts/, 'worker-integrator'],
   [/^widgets\/(simulator|controls|exports)\//, 'simulator'],
   [/^widgets\/chapter\/analysis\/kepler-run\.ts/, 'poincare-section'],
+  // The standard map and what its chapter computes of it: one chunk, which only that chapter loads.
+  [/^core\/maps\/|^core\/analysis\/standard-map\.ts$|^widgets\/chapter\/standard-map\//, 'standard-map'],
   [/^core\/analysis\/|^widgets\/chapter\/analysis\//, 'analysis'],
   [/^core\/(expression\/(?!names|mathjs-instance)|model\/compile-model|js-function\/translate)/, 'compiler'],
   // The integration methods besides RK 3/8, and how a model is switched to one: loaded only by a model that asks for one.
