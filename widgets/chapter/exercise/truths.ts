@@ -15,6 +15,7 @@ import { ADIABATIC_TRUTHS } from './truths/adiabatic.ts';
 import { SCATTERING_TRUTHS } from './truths/scattering.ts';
 import { RELATIVITY_TRUTHS } from './truths/relativity.ts';
 import { THREE_BODY_TRUTHS } from './truths/three-body.ts';
+import { STANDARD_MAP_TRUTHS } from './truths/standard-map.ts';
 
 export type { Truth } from './truth.ts';
 
@@ -28,6 +29,7 @@ export const TRUTHS: Readonly<Record<string, Truth>> = {
   ...INTEGRATOR_TRUTHS,
   ...CHAOS_TRUTHS,
   ...THREE_BODY_TRUTHS,
+  ...STANDARD_MAP_TRUTHS,
 };
 
 /** The truth's value for a declaration, or an error message naming what is wrong with it. */
