@@ -22,6 +22,8 @@
  *    a chapter's simulator, with where the time goes up to its first draw.
  * g. Lighthouse on every page, mobile and desktop presets (lighthouse.mjs):
  *    its four scores, TBT, LCP, CLS and the DOM's size.
+ * h. the standard map's portrait at its default size while its K slider moves
+ *    a step every frame (map-frames.mjs): frame rate, redraws, main-thread work.
  *
  * BENCH_ONLY=cold runs part e alone, BENCH_ONLY=first part f alone,
  * BENCH_ONLY=lighthouse part g alone (BENCH_LIGHTHOUSE_RUNS=N: the median of
@@ -44,6 +46,7 @@ import { cell, typeIntoCell } from '../tests/e2e/fixture.mjs';
 import { coldLoad, median, CPU_SLOWDOWN } from './cold-load.mjs';
 import { firstVisits, printFirstVisits } from './first-visit.mjs';
 import { lighthouseTable } from './lighthouse.mjs';
+import { mapSweep } from './map-frames.mjs';
 
 const ROOT = fileURLToPath(new URL('../', import.meta.url));
 const SECONDS = Number(process.env.BENCH_SECONDS ?? 4);
@@ -361,6 +364,8 @@ async function interactive(browser, server, print) {
     expect: { h: BEAM_H, count: 1000, speed: 1 },
   });
   await page.close();
+  log('h. the standard map, its K slider moved every frame…');
+  const h = await mapSweep(browser.context, server.origin, { ms: SECONDS * 1000, warmUpMs: WARM_UP_MS });
 
   log('d. JavaScript per page…');
   // Bytes do not depend on timing, so three pages at a time.
@@ -411,6 +416,11 @@ async function interactive(browser, server, print) {
     row(label, 'main thread busy / long tasks', `${pct(c.busy)} / ${c.longTaskSupported ? `${c.longTasks.length} (${f1(c.longTotal)} ms)` : '–'}`);
     if (c.error) row(label, 'stopped', c.error);
   }
+  const H = 'h. standard map, 1024 orbits × 300 iterates, K moved every frame';
+  const hFrames = frameStats(h.stamps);
+  row(H, 'frame rate (rAF)', `**${f1(hFrames.fps)} fps** = ${rel(hFrames.fps)} of ceiling; p95 interval ${f1(hFrames.p95)} ms, ${hFrames.missed} missed`, '60 fps');
+  row(H, 'portraits drawn / points each', `${int(h.redraws)} of ${int(hFrames.frames)} frames / ${int(h.points)}`);
+  row(H, 'main thread busy, per frame', `${pct(h.busy)} = ${f2((h.busy * 1000) / hFrames.fps)} ms`, '< 16.7 ms');
   for (const [label, s] of [['a', a], ['b', b], ...beams]) {
     if (s.error || !s.playing) log(`warning: scenario ${label} was not playing at the end${s.error ? `: ${s.error}` : ''}`);
   }
