@@ -176,14 +176,41 @@ function chaptersWithCells() {
     });
 }
 
+/** The scripts `page` has asked for and not yet received, as a live set. */
+function pendingScripts(page) {
+  const pending = new Set();
+  page.on('request', (request) => request.resourceType() === 'script' && pending.add(request));
+  page.on('requestfinished', (request) => pending.delete(request));
+  page.on('requestfailed', (request) => pending.delete(request));
+  return pending;
+}
+
+/**
+ * Waits until no script is in flight and none has been asked for during a quiet second. Only scripts count:
+ * Playwright's 'networkidle' also waits on every font, image and fetch, and on a machine under a load of 15 one
+ * chapter's page never gave it its 500 ms without a request in 180 s, though every script had long arrived.
+ */
+async function scriptsSettled(page, pending) {
+  for (;;) {
+    const before = pending.size;
+    let asked = 0;
+    const count = (request) => request.resourceType() === 'script' && (asked += 1);
+    page.on('request', count);
+    await page.waitForTimeout(1000);
+    page.off('request', count);
+    if (before === 0 && asked === 0 && pending.size === 0) return;
+  }
+}
+
 /** The gzip bytes of the scripts `url` loads before any interaction; `simulator`: the cell id whose simulator must have drawn. */
 async function firstViewScripts(url, simulator) {
   const page = await site.context.newPage();
   const { problems, requests } = watchPage(page);
+  const pending = pendingScripts(page);
   await page.goto(url);
   await page.waitForSelector('body[data-cells-ready]', { state: 'attached' });
   if (simulator) await page.locator(`#${simulator} [data-widget="simulator"][data-ready]`).waitFor();
-  await page.waitForLoadState('networkidle');
+  await scriptsSettled(page, pending);
   const loaded = scripts(requests);
   // Read before closing: closing aborts what is still in flight, which is no problem of the page's.
   const seen = [...problems];
