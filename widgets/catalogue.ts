@@ -118,6 +118,21 @@ export function createLibrary(page: PageContext, cellSignal: () => AbortSignal |
     /** pendulumPeriod(q0, p0, omega) → the exact period 4K(k)/ω of H = p²/2 − ω² cos q, from the complete elliptic integral */
     pendulumPeriod: () => import('../core/analysis/pendulum.ts').then((m) => m.pendulumPeriod),
 
+    /** pendulumAction(q0, p0, omega) → the action J = (1/2π)∮p dq of H = p²/2 − ω² cos q, (8ω/π)[E(k) − (1 − k²)K(k)]; NaN unless it librates */
+    pendulumAction: () => import('../core/analysis/pendulum.ts').then((m) => m.pendulumAction),
+    /** pendulumFrequency(q0, p0, omega) → ω(J) = ∂H/∂J = πω/2K(k) of the pendulum's libration */
+    pendulumFrequency: () => import('../core/analysis/pendulum.ts').then((m) => m.pendulumFrequency),
+    /** completeEllipticE(k) → E(k), the complete elliptic integral of the second kind */
+    completeEllipticE: () => import('../core/analysis/pendulum.ts').then((m) => m.completeEllipticE),
+    /** loopAction(q, p, t) → {action, period, loops}: (1/2π)∮p dq over the whole loops of a sampled 1-DOF orbit, or null */
+    loopAction: () => import('../core/analysis/action.ts').then((m) => m.loopAction),
+    /** flowJacobian(flow, x0, epsilon) → the Jacobian ∂x(T)/∂x(0) of a flow map by central differences, row-major */
+    flowJacobian: () => import('../core/analysis/flow-map.ts').then((m) => m.flowJacobian),
+    /** symplecticDefect(M, n) → the largest entry of MᵀΩM − Ω */
+    symplecticDefect: () => import('../core/analysis/flow-map.ts').then((m) => m.symplecticDefect),
+    /** symplecticCheck(flow, x0, epsilon) → {defect, defectHalf, truncation}: the flow map's symplectic defect at ε and ε/2, and the central differences' error from the two */
+    symplecticCheck: () => import('../core/analysis/flow-map.ts').then((m) => m.symplecticCheck),
+
     /** lagrangePoints(mu) → the five equilibria of the restricted three-body problem's rotating frame, [{name, x, y, jacobi}]: L1–L3 from their quintics, L4 and L5 in closed form */
     lagrangePoints: () => threeBody().then((m) => m.lagrangePoints),
     /** collinearQuintics(mu) → {L1, L2, L3}: the coefficients, highest power first, of the quintic whose root is each collinear point's distance from its nearer primary */

@@ -16,6 +16,7 @@ import { SCATTERING_TRUTHS } from './truths/scattering.ts';
 import { RELATIVITY_TRUTHS } from './truths/relativity.ts';
 import { THREE_BODY_TRUTHS } from './truths/three-body.ts';
 import { STANDARD_MAP_TRUTHS } from './truths/standard-map.ts';
+import { ACTION_ANGLE_TRUTHS } from './truths/action-angle.ts';
 
 export type { Truth } from './truth.ts';
 
@@ -30,6 +31,7 @@ export const TRUTHS: Readonly<Record<string, Truth>> = {
   ...CHAOS_TRUTHS,
   ...THREE_BODY_TRUTHS,
   ...STANDARD_MAP_TRUTHS,
+  ...ACTION_ANGLE_TRUTHS,
 };
 
 /** The truth's value for a declaration, or an error message naming what is wrong with it. */
