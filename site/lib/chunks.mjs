@@ -58,6 +58,11 @@ const GROUPS = [
   [/^widgets\/chapter\/analysis\/kepler-run\.ts/, 'poincare-section'],
   // The standard map and what its chapter computes of it: one chunk, which only that chapter loads.
   [/^core\/maps\/|^core\/analysis\/standard-map\.ts$|^widgets\/chapter\/standard-map\//, 'standard-map'],
+  // The counter-based generator the standard map's diffusion draws its starts from (and the datasets, in the
+  // CLI and the workers): in the core chunk, which a chapter's first simulator loads, it added 0.5 KB to each.
+  [/^core\/dataset\/philox\.ts$/, 'random'],
+  // The action–angle chapter's measurements, apart from the analysis chunk that other chapters' checks load.
+  [/^core\/analysis\/(action|flow-map)\.ts$/, 'action-angle'],
   [/^core\/analysis\/|^widgets\/chapter\/analysis\//, 'analysis'],
   [/^core\/(expression\/(?!names|mathjs-instance)|model\/compile-model|js-function\/translate)/, 'compiler'],
   // The integration methods besides RK 3/8, and how a model is switched to one: loaded only by a model that asks for one.
