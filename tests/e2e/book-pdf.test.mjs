@@ -46,6 +46,15 @@ const plain = (text) => text.replace(/[’‘]/g, "'");
 
 const escapeRegExp = (text) => text.replace(/[.*+?^$()|[\]\\{}]/g, '\\$&');
 
+/**
+ * Text with its line breaks and runs of spaces as single spaces, and none after a dash that ends a line: a long
+ * title may wrap, on its page or in the contents, between words or after the dash of "action–angle".
+ */
+const squashed = (text) => plain(text).replace(/([-–—])\s*\n\s*/g, '$1').replace(/\s+/g, ' ');
+
+/** A pattern for `title` that lets it wrap where `squashed` lets it. */
+const wrapping = (title) => plain(title).split(/\s+/).map((word) => escapeRegExp(word).replace(/([-–—])/g, '$1\\s*')).join('\\s+');
+
 let folder;
 let pdf;
 /** The whole text, and each page's (pdftotext marks a new page with a form feed). */
@@ -76,7 +85,7 @@ test("the contents page lists every chapter, in order, with the page it starts o
   assert.ok(contents >= 0, 'no contents page');
   let from = 0;
   for (const { title } of CHAPTERS) {
-    const at = pages[contents].indexOf(plain(title), from);
+    const at = squashed(pages[contents]).indexOf(squashed(title), from);
     assert.ok(at >= from, `the contents do not list "${title}" after the chapters before it`);
     from = at;
   }
@@ -88,8 +97,8 @@ test("the contents page lists every chapter, in order, with the page it starts o
     assert.ok(link, `no link to ${slug} on the contents page`);
     const start = destinations.get(link.destination);
     assert.ok(start, `the destination ${link.destination} is not in the PDF`);
-    assert.ok(pages[start - 1].includes(plain(title)), `the link to "${title}" leads to page ${start}, which does not show it`);
-    const listed = laidOut.match(new RegExp(`${escapeRegExp(plain(title))}\\s+(\\d+)\\s*$`, 'm'));
+    assert.ok(squashed(pages[start - 1]).includes(squashed(title)), `the link to "${title}" leads to page ${start}, which does not show it`);
+    const listed = laidOut.match(new RegExp(`${wrapping(title)}\\s+(\\d+)\\s*$`, 'm'));
     assert.equal(Number(listed?.[1]), start, `the contents give "${title}" page ${listed?.[1]}; it starts on page ${start}`);
   }
 });
@@ -106,7 +115,7 @@ test("links between chapters and to their sections are links inside the PDF, eve
 });
 
 test('the text is extractable: every chapter title, a sentence of the introduction, a formula, page numbers', () => {
-  for (const { title } of CHAPTERS) assert.ok(text.includes(plain(title)), `"${title}" is not in the text`);
+  for (const { title } of CHAPTERS) assert.ok(squashed(text).includes(squashed(title)), `"${title}" is not in the text`);
   assert.match(text.replace(/\s+/g, ' '), /Hamilton describes it by a single function, the energy H\(q, p, t\)/);
   // Hamilton's equations, as KaTeX set them: q̇ and ∂H.
   assert.match(text, /q̇/);
