@@ -15,6 +15,7 @@ import { test } from 'node:test';
 import { assertAgrees, assertLoadsClean, assertNoCellErrors, assertNoNaNShown, assertSumOfTerms, chartIn, editAndReadChecks, theoryChecks, useChapter } from './chapter-checks.mjs';
 import { answer, answerCode } from './exercise-answers.mjs';
 import { cell, typeIntoCell, waitForOutput } from './fixture.mjs';
+import { seededUniform } from './sweep-physics.mjs';
 
 const MACKAY_K = 0.971635406;
 const TWO_PI = 2 * Math.PI;
@@ -52,21 +53,10 @@ function rechesterWhite(K) {
   return ((K * K) / 2) * (1 - 2 * J2 - 2 * J1 * J1 + 2 * J2 * J2 + 2 * J3 * J3);
 }
 
-/** A seeded uniform generator (mulberry32), independent of the book's Philox. */
-function uniform(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
-
 /** ⟨(p_n − p_0)²⟩/n and its standard error, from this file's own iteration of p' = p + K sin q, q' = q + p'. */
 function diffusionHere(K, orbits = 4000, n = 400) {
-  const random = uniform(20261202);
+  // independent of the book's Philox
+  const random = seededUniform(20261202);
   const values = [];
   for (let j = 0; j < orbits; j++) {
     let q = TWO_PI * random();

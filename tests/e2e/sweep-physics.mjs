@@ -414,3 +414,15 @@ export function twoStars({ k, c = 1 }, initial, duration, h = 5e-4) {
   const period = up.length > 1 ? (up[up.length - 1] - up[0]) / (up.length - 1) : NaN;
   return { period, L, angle };
 }
+
+/** A seeded uniform generator on [0, 1) (mulberry32): the suite's own random numbers, reproducible, and independent of the book's. */
+export function seededUniform(seed) {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
