@@ -22,7 +22,7 @@
  */
 import * as acorn from 'acorn';
 import katex from 'katex';
-import { compiledModelFor, canonicalEquations, type HamiltonianSpec, compileModel, methodChoice, pendulumPeriod, type CompiledModel, provideMathjs, provideAcorn, type Model } from '../../core/index.ts';
+import { compiledModelFor, canonicalEquations, type HamiltonianSpec, compileModel, methodChoice, pendulumAction, pendulumFrequency, pendulumPeriod, type CompiledModel, provideMathjs, provideAcorn, type Model } from '../../core/index.ts';
 // The one module named past the core's front door: mathjs itself, handed over statically (see core/index.ts).
 import { math } from '../../core/expression/mathjs-instance.ts';
 import { memoryStore, PAGE_DATA_FORMAT, type PageData, equationsHtml, equationsLatex, katexOptions, texHtml, typesetKey, createLibrary, modelSpec, type ModelOptions, reserveHtml, simulatorPlan, type ReserveOptions } from '../../widgets/index.ts';
@@ -128,8 +128,11 @@ export async function precompileChapter(cells: readonly HeadlessCell[]): Promise
       const model = options.model ?? (await canonicalEquations(modelSpec(options), build));
       return prerendered(reserveHtml(simulatorPlan(options, model)), []);
     },
-    // Pure arithmetic, wanted by the cells that define a comparison's order study.
+    // Pure arithmetic, wanted by the cells that define a comparison's order study, and by the action–angle
+    // chapter's closed forms, which its simulator's spectrum marks: so that simulator's box is reserved too.
     pendulumPeriod,
+    pendulumAction,
+    pendulumFrequency,
     // The comparison runs in the page; here each method's model is compiled, so the page needs no mathjs.
     methodComparison: async (options: { hamiltonian: string; dof?: number; params?: Record<string, number>; methods?: string[]; coordinates?: string[]; momenta?: string[] }) => {
       const methods = new Set((options.methods ?? ['rk38', 'verlet', 'yoshida4', 'midpoint']).map((m) => (m === 'adaptive' ? 'rk38' : m)).concat('rk38'));
