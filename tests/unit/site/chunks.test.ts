@@ -45,6 +45,7 @@ describe('site/lib/chunks.mjs: what loads together', () => {
       'core/dataset/philox.ts': 'random',
       'core/analysis/action.ts': 'action-angle',
       'core/analysis/flow-map.ts': 'action-angle',
+      'core/analysis/pendulum.ts': 'pendulum',
       'widgets/chapter/method-comparison/method-comparison-run.ts': 'method-comparison',
       'widgets/chapter/exercise/exercise.ts': 'exercise',
       'widgets/chapter/exercise/truths/three-body.ts': 'exercise',
