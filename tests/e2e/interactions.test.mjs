@@ -249,6 +249,9 @@ describe('on a desk, 1280 px', () => {
     await typeIntoCell(playground.page, 'params', 'params = ({u: 0, gamma: 21.7, beta: 0.2, kappa: 8, omega: 10, f: 0})');
     await typeIntoCell(playground.page, 'options', "options = ({dt: 5e-4, speed: 1, views: ['spectrum'], spectrum: {theory: {frequency: 10 / (2 * PI), label: 'ω/2π'}}})");
     await playground.page.waitForFunction(() => document.querySelector('[data-cell="sim"] [data-widget="simulator"]')?.querySelectorAll('[data-widget]').length === 1, null);
+    // In view: a simulator scrolled out of view pauses (simulator/driver.ts), and typing into the options cell may
+    // have scrolled it away; it then stood at t = 0.25 for the whole wait.
+    await playground.page.locator('[data-cell="sim"] [data-widget="simulator"]').scrollIntoViewIfNeeded();
     const bare = await playground.page.locator('[data-cell="sim"] [data-widget="simulator"]').evaluate(collect, 0);
     assert.match(bare.last, /^strongest peak 1\.59\d* vs ω\/2π: 0\.00%$/, `at t = ${bare.t}`);
     assert.deepEqual(bare.texts.filter((t) => NEGATIVE_ZERO.test(t)), []);
