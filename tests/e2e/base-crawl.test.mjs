@@ -11,7 +11,7 @@ import assert from 'node:assert/strict';
 import { readdirSync, readFileSync, statSync } from 'node:fs';
 import { join, relative, sep } from 'node:path';
 import { after, before, test } from 'node:test';
-import { cellsReady, firstViewReady, watchPage } from './browser.mjs';
+import { cellsReady, firstViewReady, HANG_MS, watchPage } from './browser.mjs';
 import { BASE, BASE_DIST, openBaseSite } from './base-build.mjs';
 import { cell, typeIntoCell } from './fixture.mjs';
 import { search } from './search-helpers.mjs';
@@ -112,15 +112,31 @@ test('under a base path, every page: each link, asset, font, worker and request 
   for (const path of pages) {
     const page = await browser.context.newPage();
     const { problems, requests } = watchPage(page);
-    await page.goto(`${server.origin}${path}`);
-    await page.waitForLoadState('load');
-    // Every cell run, so that every widget has asked for its chunks and workers; an embed's cells are all in view.
-    if (path.includes('/embed/')) await firstViewReady(page);
-    else if (await page.locator('[data-cell]').count()) await cellsReady(page);
-    found.push(...(await page.evaluate(namedUrls)).map((u) => ({ where: path, ...u })));
-    found.push(...requests.filter((url) => !url.startsWith('data:') && !url.startsWith('blob:')).map((url) => ({ where: path, kind: 'request', url })));
-    problemsSeen.push(...problems.map((p) => `${path}: ${p}`));
-    await page.close();
+    // Some steps (evaluate, count, close) have no wait limit of their own: once, a page here sat idle for
+    // 20 minutes with none of them returning. The guard names the page and the step instead.
+    let step = 'open';
+    const crawl = async () => {
+      await page.goto(`${server.origin}${path}`);
+      step = 'load';
+      await page.waitForLoadState('load');
+      step = 'run its cells';
+      // Every cell run, so that every widget has asked for its chunks and workers; an embed's cells are all in view.
+      if (path.includes('/embed/')) await firstViewReady(page);
+      else if (await page.locator('[data-cell]').count()) await cellsReady(page);
+      step = 'read its URLs';
+      found.push(...(await page.evaluate(namedUrls)).map((u) => ({ where: path, ...u })));
+      found.push(...requests.filter((url) => !url.startsWith('data:') && !url.startsWith('blob:')).map((url) => ({ where: path, kind: 'request', url })));
+      problemsSeen.push(...problems.map((p) => `${path}: ${p}`));
+      step = 'close';
+      await page.close();
+    };
+    let timer;
+    const hang = new Promise((_, reject) => (timer = setTimeout(() => reject(new Error(`${path} hung at “${step}” for ${2 * HANG_MS / 1000} s`)), 2 * HANG_MS)));
+    try {
+      await Promise.race([crawl(), hang]);
+    } finally {
+      clearTimeout(timer);
+    }
   }
   // Search: its module, its worker and the index, asked for from a chapter.
   {
