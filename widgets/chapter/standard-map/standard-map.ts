@@ -13,7 +13,7 @@
  * data-rotation, data-exponent and data-crossed of the last one, and
  * data-ready once the portrait is drawn.
  */
-import { GREENE_K, iterateMap, mapRecord, orbitReading, standardMap as standardMapOf } from '../../../core/index.ts';
+import { GREENE_K, iterateMap, mapRecord, orbitReading, standardMap as standardMapOf, wrapAngle } from '../../../core/index.ts';
 import { button, field, h, setFieldError } from '../../controls/dom.ts';
 import { csvParts } from '../../exports/export.ts';
 import { downloadText } from '../../exports/download.ts';
@@ -61,7 +61,7 @@ function checkOptions(K: number, kMax: number, orbits: number, iterations: numbe
   for (const [name, value] of [['orbits', orbits], ['iterations', iterations]] as const) {
     if (!(Number.isInteger(value) && value >= 1)) throw new RangeError(`standardMap: ${name} must be a whole number ≥ 1, not ${String(value)}`);
   }
-  if (orbits * iterations > MOST_POINTS) throw new RangeError(`standardMap: orbits × iterations is ${orbits * iterations}; at most ${MOST_POINTS} redraw within a frame`);
+  if (orbits * iterations > MOST_POINTS) throw new RangeError(`standardMap: orbits × iterations is ${orbits * iterations}; at most ${MOST_POINTS} fill in within a second`);
 }
 
 type Setting = Required<Omit<StandardMapOptions, 'onLaunch'>> & Pick<StandardMapOptions, 'onLaunch'>;
@@ -135,7 +135,8 @@ class MapFigure {
     }
     // The iterates are an image of their own, laid over the background: no read back from the canvas.
     const layer = this.#layer;
-    [layer.width, layer.height] = [width, tall];
+    // Resized only when the portrait's size changes: setting a canvas's size, even to the same, reallocates it.
+    if (layer.width !== width || layer.height !== tall) [layer.width, layer.height] = [width, tall];
     layer.getContext('2d')?.putImageData(new ImageData(new Uint8ClampedArray(portrait.pixels.buffer as ArrayBuffer), width, tall), 0, 0);
     // g draws in CSS pixels: the image's device pixels fall one to one on the canvas's.
     g.drawImage(layer, left / dpr, top / dpr, width / dpr, tall / dpr);
@@ -177,7 +178,7 @@ class MapFigure {
     const reading: LaunchedReading = { q: start[0], p: start[1], ...orbitReading(this.#K, start, LAUNCH_ITERATIONS) };
     this.#launched = { ...orbit, reading, K: this.#K };
     this.#launches++;
-    Object.assign(this.root.dataset, { launched: String(this.#launches), rotation: String(reading.rotation), exponent: String(reading.lyapunov), crossed: String(reading.crossed) });
+    Object.assign(this.root.dataset, { rotation: String(reading.rotation), exponent: String(reading.lyapunov), crossed: String(reading.crossed) });
     this.#reading.textContent = launchReading(reading);
     this.#download.disabled = false;
     this.#setting.onLaunch?.({ ...reading, K: this.#K });
@@ -226,7 +227,7 @@ class MapFigure {
       () => [KEY_STEP, KEY_STEP],
       LARGER_STEP,
       (dq, dp) => {
-        this.#cursor = [((this.#cursor[0] + dq) % (2 * Math.PI) + 2 * Math.PI) % (2 * Math.PI), torusP(this.#cursor[1] + dp)];
+        this.#cursor = [wrapAngle(this.#cursor[0] + dq), torusP(this.#cursor[1] + dp)];
         this.#reading.textContent = cursorReading(this.#cursor);
         this.draw();
       },
