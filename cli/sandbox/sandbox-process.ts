@@ -176,7 +176,11 @@ export class Sandbox {
     if (this.failure) return waiter.reject(this.failure);
     this.waiting.push(waiter);
     this.child.send(message, (error) => {
-      if (error && !this.closing) this.fail(new Error(`the sandbox for ${this.whose()} could not be sent its work: ${error.message}`));
+      if (!error || this.closing) return;
+      // A channel broken under the message (EPIPE) is a child that is dying — the user's code crashed it a moment
+      // before — and its exit, which comes next, says why; the broken channel only says so if nothing else did.
+      const unsent = new Error(`the sandbox for ${this.whose()} could not be sent its work: ${error.message}`);
+      void this.exited.then(() => this.fail(unsent));
     });
   }
 
