@@ -6,6 +6,7 @@
  * would take longer than a frame.
  */
 import { type AreaPreservingMap, TWO_PI, wrapAngle } from '../../../core/index.ts';
+import type { PixelMapping } from '../../plots/pixel-image.ts';
 
 /** The torus as drawn: q in [0, 2π), p reduced into [−π, π) so that the main island about (π, 0) sits in the middle. */
 export const Q_DOMAIN: [number, number] = [0, TWO_PI];
@@ -32,28 +33,6 @@ export function startGrid(count: number): Float64Array {
     }
   }
   return starts;
-}
-
-/**
- * Where on the image a point of the torus falls: device pixels from the
- * image's top left, x = qScale·q + qOffset and y = pScale·p + pOffset. Plain
- * numbers rather than the plot's scale functions: a portrait maps hundreds
- * of thousands of points a frame.
- */
-export interface PixelMapping {
-  readonly width: number;
-  readonly height: number;
-  readonly qScale: number;
-  readonly qOffset: number;
-  readonly pScale: number;
-  readonly pOffset: number;
-}
-
-/** The affine mapping through two points of each axis: `x(q)` and `y(p)` as the plot's scales give them. */
-export function pixelMapping(width: number, height: number, x: (q: number) => number, y: (p: number) => number): PixelMapping {
-  const qScale = x(1) - x(0);
-  const pScale = y(1) - y(0);
-  return { width, height, qScale, qOffset: x(0), pScale, pOffset: y(0) };
 }
 
 /**
@@ -87,16 +66,4 @@ export function markOrbits(pixels: Uint32Array, to: PixelMapping, map: AreaPrese
     states[2 * k + 1] = state[1];
   }
   return marked;
-}
-
-/**
- * The image word of a computed colour, `rgb(r, g, b)` or `rgba(r, g, b, a)`
- * as getComputedStyle gives it (plots/theme.ts): bytes R, G, B, A in memory
- * order, which on the little-endian machines browsers run on is A·2²⁴ + B·2¹⁶ + G·2⁸ + R.
- */
-export function pixelWord(colour: string): number {
-  const m = /rgba?\(([^)]+)\)/.exec(colour);
-  const [r = 0, g = 0, b = 0, a = 1] = m ? m[1].split(/[\s,/]+/).filter(Boolean).map(Number) : [];
-  const alpha = Math.round(Math.min(1, Math.max(0, a)) * 255);
-  return ((alpha << 24) | (b << 16) | (g << 8) | r) >>> 0;
 }

@@ -19,7 +19,8 @@ import { csvParts } from '../../exports/export.ts';
 import { downloadText } from '../../exports/download.ts';
 import { MARGIN } from '../../plots/axes.ts';
 import { PointPanel } from '../../plots/point-panel.ts';
-import { markOrbits, P_DOMAIN, type PixelMapping, pixelMapping, pixelWord, Q_DOMAIN, startGrid, torusP } from './standard-map-orbits.ts';
+import { type PixelMapping, pixelMapping, pixelWord } from '../../plots/pixel-image.ts';
+import { markOrbits, P_DOMAIN, Q_DOMAIN, startGrid, torusP } from './standard-map-orbits.ts';
 import { cursorReading, LAUNCH_ITERATIONS, type LaunchedReading, launchReading, mapSummary } from './standard-map-text.ts';
 
 export interface StandardMapOptions {

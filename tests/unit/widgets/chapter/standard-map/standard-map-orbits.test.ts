@@ -7,7 +7,8 @@
  */
 import { expect, test } from 'vitest';
 import { standardMap } from '../../../../../core/index.ts';
-import { markOrbits, P_DOMAIN, pixelMapping, pixelWord, startGrid, torusP } from '../../../../../widgets/chapter/standard-map/standard-map-orbits.ts';
+import { markOrbits, P_DOMAIN, startGrid, torusP } from '../../../../../widgets/chapter/standard-map/standard-map-orbits.ts';
+import { pixelMapping, pixelWord } from '../../../../../widgets/plots/pixel-image.ts';
 
 const TWO_PI = 2 * Math.PI;
 
