@@ -17,6 +17,7 @@ import { RELATIVITY_TRUTHS } from './truths/relativity.ts';
 import { THREE_BODY_TRUTHS } from './truths/three-body.ts';
 import { STANDARD_MAP_TRUTHS } from './truths/standard-map.ts';
 import { ACTION_ANGLE_TRUTHS } from './truths/action-angle.ts';
+import { LIOUVILLE_TRUTHS } from './truths/liouville.ts';
 
 export type { Truth } from './truth.ts';
 
@@ -32,6 +33,7 @@ export const TRUTHS: Readonly<Record<string, Truth>> = {
   ...THREE_BODY_TRUTHS,
   ...STANDARD_MAP_TRUTHS,
   ...ACTION_ANGLE_TRUTHS,
+  ...LIOUVILLE_TRUTHS,
 };
 
 /** The truth's value for a declaration, or an error message naming what is wrong with it. */
