@@ -127,3 +127,4 @@ export { type Table } from './tables/table.ts';
 export { type HamiltonianFunction, type Model, type Route, type Stepper, type VectorField } from './types.ts';
 export { VERSION } from './version.ts';
 export { checkWindowName, hamming, type WindowName } from './spectrum/window.ts';
+export * from './ensemble/index.ts';

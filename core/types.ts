@@ -48,6 +48,21 @@ export type Route =
   | 'vector-field' // dx/dt supplied by the author
   | 'gradient'; // ∇H supplied by the author
 
+/**
+ * Terms added to Hamilton's equations, by state component name, each a math
+ * expression in H's syntax, names and parameters: e.g. `{p: '-gamma*p'}`
+ * (model/non-hamiltonian.ts).
+ */
+export type NonHamiltonianTerms = Readonly<Record<string, string>>;
+
+/** What a model says of its non-Hamiltonian terms: see Model.nonHamiltonian. */
+export interface NonHamiltonianPart {
+  /** the terms as given, in the order of the state */
+  readonly terms: NonHamiltonianTerms;
+  /** the LaTeX of each term, by component name */
+  readonly latex?: Readonly<Record<string, string>>;
+}
+
 /** A Hamiltonian system ready to integrate: model, not solver, not view. */
 export interface Model {
   readonly dof: number;
@@ -71,6 +86,16 @@ export interface Model {
   readonly hamiltonian?: HamiltonianFunction;
   /** dx/dt at one state, for readouts and tests. */
   readonly field: VectorField;
-  /** LaTeX of H and of Hamilton's equations, when H is symbolic. */
+  /** LaTeX of H and of Hamilton's equations, when H is symbolic (the equations with any non-Hamiltonian term in them). */
   readonly latex?: { readonly hamiltonian: string; readonly equations: readonly string[] };
+  /**
+   * Present when the flow is not Hamiltonian: the terms added to Hamilton's
+   * equations, ẋ_i = (Ω∇H)_i + term_i (a friction −γp, say), by state
+   * component, with their LaTeX. Such a flow is not canonical and does not
+   * conserve H, so the canonical checks (analysis/flow-map.ts,
+   * analysis/energy-drift.ts) say it is outside their validity, and the
+   * symplectic methods refuse it. `stepper`, `field` and `latex` include the
+   * terms; `hamiltonian` is H alone.
+   */
+  readonly nonHamiltonian?: NonHamiltonianPart;
 }

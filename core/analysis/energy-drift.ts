@@ -18,6 +18,8 @@
  */
 import { SMALL, two, UNIT_ROUNDOFF, type CheckCondition, type CheckInput } from './check-input.ts';
 import { fitLine } from './line-fit.ts';
+import { hamiltonianFlowCondition } from '../model/non-hamiltonian.ts';
+import type { NonHamiltonianPart } from '../types.ts';
 
 export interface EnergyDrift {
   /** steps in the run, and its time span */
@@ -128,6 +130,8 @@ export interface DriftContext {
   rate: number;
   /** does H depend on t? Then H is not conserved and no law applies. */
   autonomous: boolean;
+  /** the model's non-Hamiltonian terms (Model.nonHamiltonian), if any: then H is not conserved either */
+  nonHamiltonian?: NonHamiltonianPart;
   /** the largest |H|/|H₀| over the run, which sets the rounding of H relative to H₀ */
   scale?: number;
 }
@@ -139,6 +143,10 @@ const autonomy = (c: DriftContext): CheckCondition => ({
   holds: c.autonomous,
   condition: 'H depends on t, so the exact motion does not conserve it: there is no energy error to measure',
 });
+
+/** A non-Hamiltonian term changes H by design: that change is the physics, not the integrator's error. */
+const conservative = (c: DriftContext): CheckCondition =>
+  hamiltonianFlowCondition(c, 'the exact motion does not conserve H: its change is the physics, not an energy error of the integrator');
 
 const small = (drift: EnergyDrift): CheckCondition => ({
   holds: drift.atEnd <= SMALL,
@@ -163,6 +171,7 @@ export function driftCheck(drift: EnergyDrift, context: DriftContext): CheckInpu
     missing: `the energy error of ${context.method} was exactly 0: nothing to fit`,
     validity: [
       autonomy(context),
+      conservative(context),
       small(drift),
       {
         holds: drift.atFrom >= 3 * floor,
@@ -211,6 +220,7 @@ export function boundedCheck(drift: EnergyDrift, context: DriftContext & { sympl
         condition: `${context.method} is not symplectic: its energy error is not bounded by a modified Hamiltonian`,
       },
       autonomy(context),
+      conservative(context),
       small(drift),
       {
         holds: context.rate * context.dt <= 1,
@@ -249,6 +259,7 @@ export function modifiedEnergyCheck(drift: EnergyDrift, predicted: number, conte
     validity: [
       { holds: context.separable, condition: `H does not separate into T(p) + V(q): ${context.method}'s modified Hamiltonian is not defined` },
       autonomy(context),
+      conservative(context),
       small(drift),
       {
         holds: context.rate * context.dt <= SMALL,

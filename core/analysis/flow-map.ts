@@ -11,7 +11,15 @@
  * of about u·|x|/ε (u the unit roundoff, magnified by the flow's own
  * sensitivity): too small an ε buys rounding, too large a one truncation.
  * symplecticCheck runs at ε and ε/2 to say which of the two a defect is.
+ *
+ * Only a Hamiltonian flow is canonical: a model with a non-Hamiltonian term
+ * (model/non-hamiltonian.ts), a damped oscillator's friction say, shrinks
+ * phase-space volume by design, so its defect is the physics, not an error,
+ * and symplecticCheck says the check is outside its validity.
  */
+import type { CheckCondition } from './check-input.ts';
+import { hamiltonianFlowCondition } from '../model/non-hamiltonian.ts';
+import type { NonHamiltonianPart } from '../types.ts';
 
 /**
  * The 2n×2n Jacobian M_ij = ∂x_i(T)/∂x_j(0) of `flow` at x0, row-major, by the
@@ -71,8 +79,18 @@ export function symplecticDefect(M: ArrayLike<number>, n: number): number {
  * entries. A defect well above `truncation` belongs to the map; one at or
  * below it is the differencing's (or, if halving ε raised the defect,
  * rounding's). The state has 2n coordinates, n = x0.length/2.
+ *
+ * `validity` holds the conditions of the claim MᵀΩM = Ω, for a theory
+ * check's `validity` (check-input.ts): given the model whose flow `flow` is,
+ * one that fails when the model has a non-Hamiltonian term. A bare flow,
+ * with no model, is taken at its word.
  */
-export function symplecticCheck(flow: (x0: Float64Array) => Float64Array, x0: ArrayLike<number>, epsilon: number): { defect: number; defectHalf: number; truncation: number } {
+export function symplecticCheck(
+  flow: (x0: Float64Array) => Float64Array,
+  x0: ArrayLike<number>,
+  epsilon: number,
+  model?: { readonly nonHamiltonian?: NonHamiltonianPart },
+): { defect: number; defectHalf: number; truncation: number; validity: CheckCondition[] } {
   if (x0.length % 2 !== 0 || x0.length === 0) throw new RangeError(`a state q_1..q_n, p_1..p_n has an even number of coordinates, not ${x0.length}`);
   const n = x0.length / 2;
   const S = symplecticResidual(flowJacobian(flow, x0, epsilon), n);
@@ -83,5 +101,6 @@ export function symplecticCheck(flow: (x0: Float64Array) => Float64Array, x0: Ar
     defectHalf = Math.max(defectHalf, Math.abs(half[i]));
     change = Math.max(change, Math.abs(S[i] - half[i]));
   }
-  return { defect, defectHalf, truncation: (4 / 3) * change };
+  const validity = [hamiltonianFlowCondition(model, 'its flow is not canonical')];
+  return { defect, defectHalf, truncation: (4 / 3) * change, validity };
 }

@@ -104,3 +104,43 @@ export function recordReturns(phases: ArrayLike<number>): { n: number; distance:
   }
   return out;
 }
+
+/** Whether the rotation by α is periodic within T steps: α a fraction whose denominator is at most T. */
+export function periodicWithin(alpha: number, T: number): boolean {
+  const a = continuedFraction(alpha - Math.floor(alpha));
+  // The expansion ended before its 40 terms: a fraction, within rounding, with the last denominator its own.
+  return a.length < 40 && convergentDenominators(alpha - Math.floor(alpha), Infinity).at(-1)! <= T;
+}
+
+export interface KacMeasurement extends ArcReturns {
+  /** the Denjoy–Koksma bound on |returns − εT| over the span */
+  visitBound: number;
+  /** the largest difference of the phases from those of a run at half the step, times 16/15 (RK 3/8's Richardson) */
+  phaseError: number;
+  /** the largest departure of a crossing's turn from α: 0 for a rotation of the circle */
+  rotationSpread: number;
+  /** α is a fraction with a denominator within the run */
+  periodic: boolean;
+}
+
+/**
+ * What Kac's check needs from a section's phases θ_n (turns), the same
+ * phases from a run at half the step, the turn α a crossing should make
+ * and the arc's width ε: the returns and their mean, the Denjoy–Koksma
+ * bound on the count, the phases' integration error, and the two premises
+ * (the motion is a rotation by α, and α is no fraction within the run).
+ */
+export function kacMeasurement(phases: ArrayLike<number>, halfStep: ArrayLike<number>, alpha: number, width: number): KacMeasurement {
+  const r = arcReturns(phases, width);
+  let phaseError = 0;
+  for (let n = 0; n < Math.min(phases.length, halfStep.length); n++) phaseError = Math.max(phaseError, turnDistance(phases[n], halfStep[n]));
+  let rotationSpread = 0;
+  for (let n = 1; n < phases.length; n++) rotationSpread = Math.max(rotationSpread, turnDistance(phases[n] - phases[n - 1], alpha));
+  return {
+    ...r,
+    visitBound: arcVisitBound(alpha, r.span),
+    phaseError: (16 / 15) * phaseError,
+    rotationSpread,
+    periodic: periodicWithin(alpha, Math.max(1, r.span)),
+  };
+}

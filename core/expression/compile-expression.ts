@@ -1,15 +1,17 @@
 import type { MathNode } from 'mathjs';
 import { BuildTracker, throwIfAborted, type BuildControl } from '../model/build-control.ts';
 import { InputError } from '../errors.ts';
-import { LOGICAL_OPERATORS, SUPPORTED_FUNCTIONS } from './emit.ts';
-
-const ARITHMETIC = new Set(['add', 'subtract', 'multiply', 'divide', 'unaryMinus', 'unaryPlus', 'pow']);
+import { requireHamiltonianFlow } from '../integrators/methods.ts';
+import { describeTerms } from '../model/non-hamiltonian.ts';
+import type { NonHamiltonianPart, NonHamiltonianTerms } from '../types.ts';
 import { evaluatorSource, fusedStepperSource, type RateExpressions } from './fused-stepper.ts';
 import { jacobianEntries, jacobianSource } from './jacobian.ts';
+import { parseTerms, rateWithTerm, type ParsedTerm } from './non-hamiltonian.ts';
+import { parseChecked } from './parse.ts';
 import { requireSeparable } from './separable.ts';
 import { splitStepperSource } from './split-stepper.ts';
-import { CONSTANTS, checkName, stateNames } from './names.ts';
-import { latexOf } from './latex.ts';
+import { checkName, stateNames } from './names.ts';
+import { expressionTex, latexOf } from './latex.ts';
 import { loadMathjs, type MathJs } from './mathjs.ts';
 import { Partials } from './partials.ts';
 import { Tidy } from './tidy.ts';
@@ -27,6 +29,12 @@ export interface ExpressionSpec {
    * checked to separate; the midpoint rule gets the Jacobian as well.
    */
   method?: 'verlet' | 'yoshida4' | 'midpoint';
+  /**
+   * Terms added to Hamilton's equations, by state name, in H's syntax
+   * (model/non-hamiltonian.ts): part of the rates, so of the stepper, the
+   * field and the equations' LaTeX, but not of H.
+   */
+  nonHamiltonian?: NonHamiltonianTerms;
 }
 
 /** The generated code and LaTeX of an expression H (see CompiledModel). */
@@ -34,6 +42,8 @@ export interface CompiledExpression {
   names: string[];
   code: { stepper: string; field: string; hamiltonian: string; jacobian?: string };
   latex: { hamiltonian: string; equations: string[] };
+  /** the non-Hamiltonian terms the code carries, when there are any */
+  nonHamiltonian?: NonHamiltonianPart;
 }
 
 /** H parsed, checked and with its names resolved: the first stage of a compile. */
@@ -43,13 +53,19 @@ export interface ParsedHamiltonian {
   names: string[];
   paramNames: readonly string[];
   hamiltonian: MathNode;
+  /** the non-Hamiltonian terms, parsed as H is, in the state's order (none for a Hamiltonian flow) */
+  terms: readonly ParsedTerm[];
 }
 
 /** Hamilton's equations of H: the second stage of a compile. */
 export interface HamiltonEquations {
-  /** The rate of each state component, as the stepper computes it: ∂H/∂p, or ∂H/∂q to be negated. */
+  /**
+   * The rate of each state component, as the stepper computes it: ∂H/∂p, or
+   * ∂H/∂q to be negated; a component with a non-Hamiltonian term has the
+   * whole of its rate, term included, not negated.
+   */
   rates: { node: MathNode; negate: boolean }[];
-  /** The right-hand sides as read: ∂H/∂p, and −∂H/∂q with the minus worked in. */
+  /** The right-hand sides as read: ∂H/∂p, and −∂H/∂q with the minus worked in, plus any term. */
   readable: MathNode[];
 }
 
@@ -65,6 +81,8 @@ export async function compileExpression(spec: ExpressionSpec, control: BuildCont
   throwIfAborted(control.signal);
   const math = await loadMathjs();
   const parsed = parseHamiltonian(math, spec);
+  // A method's own code is made from H's derivatives alone, which the terms are not part of.
+  if (spec.method && parsed.terms.length) requireHamiltonianFlow(spec.method, describeTerms(termsOf(parsed)));
   const extra = spec.method === 'midpoint' ? parsed.names.length : 0;
   const tracker = new BuildTracker(control, parsed.names.length + 1 + extra);
   const equations = await hamiltonEquations(math, parsed, tracker);
@@ -107,8 +125,9 @@ export function parseHamiltonian(math: MathJs, spec: ExpressionSpec): ParsedHami
     checkName(name, 'parameter');
     if (names.includes(name)) throw new InputError(`the parameter ${name} has the name of a state component`);
   }
-  const hamiltonian = prepare(math, parseExpression(math, spec.source), names, aliases, paramNames);
-  return { dof: spec.dof, names, paramNames, hamiltonian };
+  const known = { names, aliases, paramNames };
+  const hamiltonian = parseChecked(math, spec.source, 'H', known);
+  return { dof: spec.dof, names, paramNames, hamiltonian, terms: parseTerms(math, spec.nonHamiltonian, known) };
 }
 
 /**
@@ -130,84 +149,34 @@ export async function hamiltonEquations(math: MathJs, parsed: ParsedHamiltonian,
     await tracker?.step();
   }
   const readable = rates.map(({ node, negate }) => (negate ? tidy.negated(node) : node));
+  for (const { index, node } of parsed.terms) {
+    readable[index] = rateWithTerm(math, tidy, readable[index], node);
+    rates[index] = { node: readable[index], negate: false };
+  }
   return { rates, readable };
 }
 
 /** The stepper, the two evaluators and the LaTeX, from H and its equations. */
 export function generateCode(parsed: ParsedHamiltonian, equations: HamiltonEquations): CompiledExpression {
-  const { names, paramNames, hamiltonian, dof } = parsed;
+  const { names, paramNames, hamiltonian, dof, terms } = parsed;
   const { rates } = equations;
   const model: RateExpressions = { names, paramNames, rates };
-  return {
+  const added = names.map((_, i) => terms.find((term) => term.index === i)?.node);
+  const compiled: CompiledExpression = {
     names,
     code: {
       stepper: fusedStepperSource(model),
       field: evaluatorSource(model, rates, 'vector'),
       hamiltonian: evaluatorSource(model, [{ node: hamiltonian, negate: false }], 'scalar'),
     },
-    latex: latexOf(hamiltonian, equations.readable, names, dof),
+    latex: latexOf(hamiltonian, equations.readable, names, dof, added),
   };
+  if (!terms.length) return compiled;
+  const latex = Object.fromEntries(terms.map(({ name, node }) => [name, expressionTex(node)]));
+  return { ...compiled, nonHamiltonian: { terms: termsOf(parsed), latex } };
 }
 
-function parseExpression(math: MathJs, source: string): MathNode {
-  if (!source.trim()) throw new InputError('H is empty');
-  try {
-    return math.parse(source);
-  } catch (error) {
-    const e = error as Error & { char?: number };
-    const where = e.char !== undefined ? ` at column ${e.char}` : '';
-    const message = e.message.replace(/\s*\(char \d+\)$/, '');
-    throw new InputError(`syntax error in H${where}: ${message}`);
-  }
-}
-
-/**
- * Resolves aliases, rewrites functions mathjs cannot differentiate into ones
- * it can (hypot(a, b) = √(a² + b²)), and rejects unknown names and functions
- * before any derivative is taken, so the user hears about a typo, not about
- * a failed derivative.
- */
-function prepare(
-  math: MathJs,
-  node: MathNode,
-  names: readonly string[],
-  aliases: ReadonlyMap<string, string>,
-  paramNames: readonly string[],
-): MathNode {
-  const known = new Set([...names, ...paramNames, 't', ...Object.keys(CONSTANTS)]);
-  return node.transform((n: MathNode, path: string) => {
-    if (path === 'fn') return n;
-    if (n.type === 'FunctionNode') {
-      const f = n as unknown as { fn: { name: string }; args: MathNode[] };
-      const name = f.fn.name;
-      if (name === 'hypot') {
-        const squares = f.args.map((a) => `(${a.toString()})^2`).join(' + ');
-        return prepare(math, math.parse(`sqrt(${squares})`), names, aliases, paramNames);
-      }
-      if ((name === 'min' || name === 'max') && f.args.length > 2) {
-        // min(a, b, c) = min(min(a, b), c): the emitter and the derivative rules take two arguments.
-        const nested = f.args.slice(1).reduce((acc, arg) => new math.FunctionNode(new math.SymbolNode(name), [acc, arg]), f.args[0]);
-        return prepare(math, nested, names, aliases, paramNames);
-      }
-      if (!SUPPORTED_FUNCTIONS.has(name)) throw new InputError(`H calls ${name}(), which is not a supported function`);
-      const arity = name === 'min' || name === 'max' || name === 'atan2' ? 2 : 1;
-      if (f.args.length !== arity) throw new InputError(`H calls ${name}() with ${f.args.length} argument(s); it takes ${arity}`);
-      return n;
-    }
-    if (n.type === 'SymbolNode') {
-      const name = (n as unknown as { name: string }).name;
-      const alias = aliases.get(name);
-      if (alias) return new math.SymbolNode(alias);
-      if (!known.has(name)) throw new InputError(`unknown name ${name} in H: give it a value as a parameter`);
-    }
-    if (n.type === 'OperatorNode') {
-      const fn = (n as unknown as { fn: string }).fn;
-      if (!ARITHMETIC.has(fn) && !LOGICAL_OPERATORS.has(fn)) throw new InputError(`H may not use the operator ${(n as unknown as { op: string }).op}`);
-    }
-    const allowed = ['ConstantNode', 'OperatorNode', 'ParenthesisNode', 'SymbolNode', 'ConditionalNode'];
-    if (!allowed.includes(n.type)) {
-      throw new InputError(`H may use only arithmetic, comparisons, conditionals (c ? a : b), functions, numbers and names, not ${n.toString()}`);
-    }
-    return n;
-  });
+/** The terms of a parsed H as given, by state name. */
+function termsOf(parsed: ParsedHamiltonian): NonHamiltonianTerms {
+  return Object.fromEntries(parsed.terms.map(({ name, source }) => [name, source]));
 }

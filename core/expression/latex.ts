@@ -16,6 +16,11 @@ export function symbolTex(name: string, dot = false): string {
   return sub ? `${head}_{${sub}}` : head;
 }
 
+/** LaTeX of an expression as the equations write it (a non-Hamiltonian term on its own, say). */
+export function expressionTex(node: MathNode): string {
+  return toTex(node).trim();
+}
+
 function toTex(node: MathNode): string {
   const options = {
     parenthesis: 'auto',
@@ -49,19 +54,26 @@ function negatedOperand(node: MathNode): MathNode | undefined {
  * LaTeX of H and of Hamilton's equations q̇ = ∂H/∂p, ṗ = −∂H/∂q, for the
  * chapters to typeset. The right-hand sides are the derivatives the stepper
  * integrates (`readable`: q's rates, then p's), with the minus of ṗ worked
- * in for reading.
+ * in for reading. `added` holds, by component, a non-Hamiltonian term
+ * added to the rate (model/non-hamiltonian.ts): it is written beside the
+ * derivative, ṗ = −∂H/∂q − γp = …, so that the reader sees which part of
+ * the motion is not Hamilton's; H itself is written without it.
  */
 export function latexOf(
   hamiltonian: MathNode,
   readable: readonly MathNode[],
   names: readonly string[],
   dof: number,
+  added: readonly (MathNode | undefined)[] = [],
 ): { hamiltonian: string; equations: string[] } {
   const lines = names.map((name, i) => {
     const momentum = i >= dof;
     const conjugate = momentum ? names[i - dof] : names[i + dof];
     const partial = `${momentum ? '-' : ''}\\frac{\\partial H}{\\partial ${symbolTex(conjugate)}}`;
-    return `${symbolTex(name, true)} = ${partial} = ${toTex(readable[i])}`;
+    const term = added[i] && expressionTex(added[i]);
+    // A term that starts with its own minus sign needs no plus before it.
+    const withTerm = term === undefined ? partial : `${partial} ${term.startsWith('-') ? '' : '+ '}${term}`;
+    return `${symbolTex(name, true)} = ${withTerm} = ${toTex(readable[i])}`;
   });
   return { hamiltonian: `H = ${toTex(hamiltonian)}`, equations: lines };
 }

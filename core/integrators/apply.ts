@@ -4,13 +4,16 @@
  * separable H (expression/split-stepper.ts), so they are refused for H given
  * as an opaque function or a vector field, whose separation cannot be shown;
  * the midpoint rule uses the exact Jacobian when there is one, else central
- * differences of the field; the adaptive method needs only the field.
+ * differences of the field; the adaptive method needs only the field. A
+ * model with a non-Hamiltonian term runs only by the methods that integrate
+ * any field (methods.ts, requireHamiltonianFlow).
  */
 import { InputError } from '../errors.ts';
 import { withSummary } from '../summary.ts';
 import type { Model, Stepper } from '../types.ts';
 import { dormandPrince } from './dormand-prince.ts';
-import { METHOD_ACCURACY, SPLITTING_METHODS, type MethodChoice } from './methods.ts';
+import { describeTerms } from '../model/non-hamiltonian.ts';
+import { METHOD_ACCURACY, requireHamiltonianFlow, SPLITTING_METHODS, type MethodChoice } from './methods.ts';
 import { differenceJacobian, implicitMidpoint, type JacobianFunction } from './midpoint.ts';
 
 const DERIVATIVES: Record<Model['route'], string> = {
@@ -38,6 +41,7 @@ export interface MethodParts {
 export function applyMethod(model: Model, choice: MethodChoice, parts: MethodParts = {}): Model {
   const { name } = choice;
   if (name === 'rk38') return model;
+  if (model.nonHamiltonian) requireHamiltonianFlow(name, describeTerms(model.nonHamiltonian.terms));
   const { dim, field } = model;
   let stepper: Stepper;
   if (SPLITTING_METHODS.has(name)) {

@@ -2,13 +2,14 @@ import type { BuildControl } from './build-control.ts';
 import { isCompiledModel, modelKey, type CompiledModel, type CompiledModelStore, type ModelKeySpec } from './compiled-model.ts';
 import { InputError } from '../errors.ts';
 import type { MethodParts } from '../integrators/apply.ts';
-import { DEFAULT_METHOD, type MethodChoice } from '../integrators/methods.ts';
+import { DEFAULT_METHOD, requireHamiltonianFlow, type MethodChoice } from '../integrators/methods.ts';
 import { stateNames } from '../expression/names.ts';
+import { checkedTerms, describeTerms, requireExpressionRoute } from './non-hamiltonian.ts';
 import { compiledParts } from './compiled-parts.ts';
 import { gradientField, type OpaqueHamiltonian } from '../js-function/stencil.ts';
 import { rk38 } from '../integrators/rk38.ts';
 import { withSummary } from '../summary.ts';
-import type { HamiltonianFunction, Model, Route, VectorField } from '../types.ts';
+import type { HamiltonianFunction, Model, NonHamiltonianTerms, Route, VectorField } from '../types.ts';
 
 /**
  * What defines a model: `hamiltonian` (a math expression, JS function source,
@@ -31,6 +32,15 @@ export interface HamiltonianSpec {
   differentiation?: 'auto' | 'stencil';
   /** the integration method, RK 3/8 by default (integrators/methods.ts) */
   method?: MethodChoice;
+  /**
+   * Terms added to Hamilton's equations, by state name: ẋ_i = (Ω∇H)_i +
+   * term_i, e.g. `{p: '-gamma*p'}` for a damped oscillator. Each is a math
+   * expression in H's syntax, names and parameters. Only with H as a math
+   * expression, and only for the methods rk38 and adaptive; the model then
+   * carries `nonHamiltonian`, and the canonical checks leave it out
+   * (model/non-hamiltonian.ts).
+   */
+  nonHamiltonian?: NonHamiltonianTerms;
 }
 
 export interface BuildOptions extends BuildControl {
@@ -49,7 +59,8 @@ export interface BuildOptions extends BuildControl {
  * for a model, by the most exact route its definition allows (see
  * compileModel): exact symbolic derivatives and a fused stepper for a math
  * expression or a translatable JS function, 5-point central differences for
- * any other JS function, and a vector field or gradient as given.
+ * any other JS function, and a vector field or gradient as given. A spec's
+ * non-Hamiltonian terms are added to these equations (model/non-hamiltonian.ts).
  */
 export async function canonicalEquations(spec: HamiltonianSpec, options: BuildOptions = {}): Promise<Model> {
   const fields = [spec.vectorField, spec.gradient].filter((v) => v !== undefined).length;
@@ -57,6 +68,12 @@ export async function canonicalEquations(spec: HamiltonianSpec, options: BuildOp
     throw new InputError('give a hamiltonian, or one of vectorField and gradient (with an optional hamiltonian function for readouts)');
   }
   const { names } = stateNames(spec.dof, spec.coordinates, spec.momenta);
+  // Refused here, before anything is compiled or looked up, so that the reader hears of the term, not of the compile.
+  const terms = checkedTerms(spec.nonHamiltonian, names);
+  if (terms) {
+    requireExpressionRoute(spec);
+    requireHamiltonianFlow((spec.method ?? DEFAULT_METHOD).name, describeTerms(terms));
+  }
   if (spec.vectorField) return fieldModel(spec, names, 'vector-field', spec.vectorField, String(spec.vectorField));
   if (spec.gradient) {
     return fieldModel(spec, names, 'gradient', gradientField(spec.gradient, 2 * spec.dof), String(spec.gradient));

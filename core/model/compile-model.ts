@@ -7,6 +7,8 @@ import { throwIfAborted, type BuildControl } from './build-control.ts';
 import { codeMethodOf, COMPILED_FORMAT, hamiltonianSource, modelKey, type CompiledModel, type ModelKeySpec } from './compiled-model.ts';
 import { InputError } from '../errors.ts';
 import { compileExpression } from '../expression/compile-expression.ts';
+import { requireHamiltonianFlow } from '../integrators/methods.ts';
+import { checkedTerms, describeTerms, requireExpressionRoute } from './non-hamiltonian.ts';
 import { stateNames } from '../expression/names.ts';
 import { isFunctionSource, isStackOverflow, parseFunction, requireFunctionExpression } from '../js-function/function-source.ts';
 import { translateFunction } from '../js-function/translate.ts';
@@ -18,6 +20,9 @@ import { translateFunction } from '../js-function/translate.ts';
  *   translated to an expression and gets the same;
  * - any other JS function (or `differentiation: 'stencil'`) is left opaque,
  *   for 5-point central differences.
+ *
+ * Non-Hamiltonian terms are compiled with an expression H only, and only for
+ * the methods that integrate any field (model/non-hamiltonian.ts).
  *
  * `control` lets the caller abort a build superseded by a new edit (it stops
  * between two derivatives with an AbortError) and follow its progress.
@@ -33,10 +38,15 @@ export async function compileModel(spec: ModelKeySpec, control: BuildControl = {
   const method = codeMethodOf(spec);
   const expression = { dof: spec.dof, paramNames, coordinates: spec.coordinates, momenta: spec.momenta, method };
   const withMethod = method ? { method } : {};
+  const terms = checkedTerms(spec.nonHamiltonian, names);
+  if (terms) {
+    requireExpressionRoute(spec);
+    if (method) requireHamiltonianFlow(method, describeTerms(terms));
+  }
 
   if (typeof spec.hamiltonian === 'string' && !isFunctionSource(spec.hamiltonian)) {
-    const { code, latex } = await deepTreesSaid(source, () => compileExpression({ ...expression, source }, control));
-    return { ...common, ...withMethod, route: 'expression', code, latex };
+    const { code, latex, nonHamiltonian } = await deepTreesSaid(source, () => compileExpression({ ...expression, source, nonHamiltonian: terms }, control));
+    return { ...common, ...withMethod, route: 'expression', code, latex, ...(nonHamiltonian ? { nonHamiltonian } : {}) };
   }
   const program = await parseFunction(source);
   // Decided from the tree: compiling never runs any of H's code, so that what H's code may do is up to whoever builds the model.

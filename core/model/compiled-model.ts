@@ -14,17 +14,20 @@
  *
  * A compiled model is found by its key, which is everything that decides the
  * generated code: H's source, the degrees of freedom, the names of the state
- * and of the parameters, and the route asked for. Parameter VALUES are not
- * part of it: the generated code reads them live from an array.
+ * and of the parameters, the route asked for, and any non-Hamiltonian terms.
+ * Parameter VALUES are not part of it: the generated code reads them live
+ * from an array.
  */
 import { CODE_METHODS, type MethodChoice, type MethodName } from '../integrators/methods.ts';
 import type { OpaqueHamiltonian } from '../js-function/stencil.ts';
+import type { NonHamiltonianPart, NonHamiltonianTerms } from '../types.ts';
 
 /**
  * Bumped whenever the generated code or this layout changes, so that data
  * compiled by another version is never used: it is compiled afresh instead.
+ * 3: models may carry non-Hamiltonian terms (`nonHamiltonian`).
  */
-export const COMPILED_FORMAT = 2;
+export const COMPILED_FORMAT = 3;
 
 /** The routes that start from H and so can be compiled ahead. */
 export type CompiledRoute = 'expression' | 'js-translated' | 'js-stencil';
@@ -57,8 +60,10 @@ export interface CompiledModel {
     /** for the midpoint rule: `return function (P) { return function (t, x, J) {…} }`, ∂f/∂x row-major */
     readonly jacobian?: string;
   };
-  /** LaTeX of H and of Hamilton's equations, for a symbolic H. */
+  /** LaTeX of H and of Hamilton's equations, for a symbolic H (the equations with any non-Hamiltonian term in them). */
   readonly latex?: { readonly hamiltonian: string; readonly equations: readonly string[] };
+  /** The non-Hamiltonian terms the code carries, when there are any (model/non-hamiltonian.ts); only on the expression route. */
+  readonly nonHamiltonian?: NonHamiltonianPart;
 }
 
 /** What decides a model's generated code; see {@link modelKey}. */
@@ -71,6 +76,8 @@ export interface ModelKeySpec {
   differentiation?: 'auto' | 'stencil';
   /** the integration method; only those that need code of their own change the key */
   method?: MethodName | MethodChoice;
+  /** terms added to Hamilton's equations, by state name (model/non-hamiltonian.ts) */
+  nonHamiltonian?: NonHamiltonianTerms;
 }
 
 /** The method of a spec that needs code of its own, if it has one. */
@@ -102,6 +109,9 @@ export function modelKey(spec: ModelKeySpec): string {
   // RK 3/8's key is as it always was, so models compiled before methods existed stay valid.
   const method = codeMethodOf(spec);
   if (method) key.push(method);
+  // Terms only when there are some, sorted by name: the order they were written in changes no code.
+  const terms = Object.keys(spec.nonHamiltonian ?? {}).sort();
+  if (terms.length) key.push({ nonHamiltonian: terms.map((name) => [name, spec.nonHamiltonian![name]]) });
   return JSON.stringify(key);
 }
 
@@ -120,10 +130,22 @@ export function isCompiledModel(value: unknown, key: string): value is CompiledM
   if (!Number.isInteger(c.dof) || !isStrings(c.names) || c.names.length !== 2 * (c.dof as number)) return false;
   if (!isStrings(c.paramNames) || typeof c.source !== 'string') return false;
   if (c.method !== undefined && !(typeof c.method === 'string' && CODE_METHODS.has(c.method as MethodName))) return false;
+  if (c.nonHamiltonian !== undefined && !(c.route === 'expression' && isTermsPart(c.nonHamiltonian, c.names as string[]))) return false;
   if (c.route === 'js-stencil') return true;
   const code = c.code as Record<string, unknown> | undefined;
   if (c.method === 'midpoint' && typeof code?.jacobian !== 'string') return false;
   return typeof code?.stepper === 'string' && typeof code.field === 'string' && typeof code.hamiltonian === 'string';
+}
+
+const isStringRecord = (v: unknown): v is Record<string, string> =>
+  typeof v === 'object' && v !== null && !Array.isArray(v) && Object.values(v).every((s) => typeof s === 'string');
+
+/** A model's record of its non-Hamiltonian terms: at least one, each keyed by a state name, with LaTeX if any by the same names. */
+function isTermsPart(value: unknown, names: readonly string[]): value is NonHamiltonianPart {
+  if (typeof value !== 'object' || value === null) return false;
+  const { terms, latex } = value as Record<string, unknown>;
+  if (!isStringRecord(terms) || Object.keys(terms).length === 0 || !Object.keys(terms).every((name) => names.includes(name))) return false;
+  return latex === undefined || (isStringRecord(latex) && Object.keys(latex).every((name) => Object.hasOwn(terms, name)));
 }
 
 /** Where compiled models are kept between uses: a page's build-time data, the CLI's cache. */

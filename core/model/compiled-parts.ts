@@ -9,12 +9,13 @@
 import type { CompiledModel, CompiledRoute } from './compiled-model.ts';
 import { InputError } from '../errors.ts';
 import type { MethodParts } from '../integrators/apply.ts';
-import { DEFAULT_METHOD, type MethodChoice } from '../integrators/methods.ts';
+import { DEFAULT_METHOD, requireHamiltonianFlow, type MethodChoice } from '../integrators/methods.ts';
 import type { JacobianFunction } from '../integrators/midpoint.ts';
 import { functionFromSource } from '../js-function/function-source.ts';
 import { stencilField, type OpaqueHamiltonian } from '../js-function/stencil.ts';
 import { rk38 } from '../integrators/rk38.ts';
 import { withSummary } from '../summary.ts';
+import { describeTerms } from './non-hamiltonian.ts';
 import type { HamiltonianFunction, Model, Stepper, VectorField } from '../types.ts';
 
 const ACCURACY: Record<CompiledRoute, string> = {
@@ -68,6 +69,9 @@ export function compiledParts(
     return { model: withSummary({ ...common, ...stencilParts(compiled, values, opaque) }), parts: {} };
   }
   const code = compiled.code!;
+  const { nonHamiltonian } = compiled;
+  // Said before the check of the code's method below, which would only say the code is for another method.
+  if (nonHamiltonian) requireHamiltonianFlow(method.name, describeTerms(nonHamiltonian.terms));
   // code.stepper is RK 3/8's unless the code was generated for a splitting, whose stepper it then is.
   const split = compiled.method === 'verlet' || compiled.method === 'yoshida4';
   const needsOwnCode = method.name === 'verlet' || method.name === 'yoshida4' || method.name === 'midpoint';
@@ -81,6 +85,7 @@ export function compiledParts(
     field: new Function(code.field)()(values) as VectorField,
     hamiltonian: new Function(code.hamiltonian)()(values) as HamiltonianFunction,
     latex: compiled.latex,
+    ...(nonHamiltonian ? { nonHamiltonian } : {}),
   });
   const jacobian = code.jacobian ? exactJacobian(code.jacobian, values, common.dim) : undefined;
   return { model, parts: { split: split ? advance : undefined, jacobian } };

@@ -12,7 +12,7 @@
 import { describe, expect, test } from 'vitest';
 import { canonicalEquations } from '../../../../core/index.ts';
 import { modelSection } from '../../../../core/analysis/model-section.ts';
-import { arcReturns, arcVisitBound, continuedFraction, convergentDenominators, ostrowskiDigitSum, recordReturns, turnDistance } from '../../../../core/analysis/recurrence.ts';
+import { arcReturns, arcVisitBound, continuedFraction, convergentDenominators, kacMeasurement, ostrowskiDigitSum, periodicWithin, recordReturns, turnDistance } from '../../../../core/analysis/recurrence.ts';
 
 const GOLDEN = (1 + Math.sqrt(5)) / 2;
 const fibonacci = (count: number) => {
@@ -121,5 +121,28 @@ describe('the section of a model', () => {
     expect(() => modelSection(model, [0, 1], { dt: 0.1, count: 1, index: 2 })).toThrow(/index must be a state component/);
     const run = modelSection(model, [1, 10], { dt: 0.1, count: 5, maxSteps: 10_000 });
     expect(run.failed).toBe(true);
+  });
+});
+
+describe('Kac’s measurement', () => {
+  const rotation = (alpha: number, count: number, start = 0.2) => Float64Array.from({ length: count }, (_, n) => (start + n * alpha) % 1);
+
+  test('of an exact golden rotation: no phase error, no spread, not periodic, the mean within its bound of 1/ε', () => {
+    const phases = rotation(GOLDEN - 1, 5000);
+    const m = kacMeasurement(phases, phases, GOLDEN - 1, 0.02);
+    expect(m.phaseError).toBe(0);
+    expect(m.rotationSpread).toBeLessThan(1e-12);
+    expect(m.periodic).toBe(false);
+    expect(Math.abs(m.mean - 50)).toBeLessThanOrEqual(m.visitBound / (0.02 * m.returns));
+  });
+
+  test('a rational turn is periodic within the run; a perturbed rotation has a spread; a shifted run has a phase error', () => {
+    expect(kacMeasurement(rotation(0.5, 100), rotation(0.5, 100), 0.5, 0.02).periodic).toBe(true);
+    expect(periodicWithin(3 / 1000, 500)).toBe(false);
+    expect(periodicWithin(3 / 1000, 1000)).toBe(true);
+    const wobbly = Float64Array.from(rotation(GOLDEN - 1, 1000), (x, n) => (x + 1e-4 * Math.sin(n)) % 1);
+    expect(kacMeasurement(wobbly, wobbly, GOLDEN - 1, 0.02).rotationSpread).toBeGreaterThan(5e-5);
+    const shifted = Float64Array.from(rotation(GOLDEN - 1, 1000), (x) => (x + 3e-7) % 1);
+    expect(kacMeasurement(rotation(GOLDEN - 1, 1000), shifted, GOLDEN - 1, 0.02).phaseError).toBeCloseTo((16 / 15) * 3e-7, 12);
   });
 });
