@@ -117,6 +117,8 @@ export interface KacMeasurement extends ArcReturns {
   visitBound: number;
   /** the largest difference of the phases from those of a run at half the step, times 16/15 (RK 3/8's Richardson) */
   phaseError: number;
+  /** crossings whose phase lies within twice phaseError of the arc's ends, where the integration could move a visit in or out */
+  ambiguous: number;
   /** the largest departure of a crossing's turn from α: 0 for a rotation of the circle */
   rotationSpread: number;
   /** α is a fraction with a denominator within the run */
@@ -134,12 +136,17 @@ export function kacMeasurement(phases: ArrayLike<number>, halfStep: ArrayLike<nu
   const r = arcReturns(phases, width);
   let phaseError = 0;
   for (let n = 0; n < Math.min(phases.length, halfStep.length); n++) phaseError = Math.max(phaseError, turnDistance(phases[n], halfStep[n]));
+  phaseError *= 16 / 15;
+  // The start's own error moves the arc's centre as much as the error moves a phase: twice the error from its ends.
+  let ambiguous = 0;
+  for (let n = 1; n < phases.length; n++) if (Math.abs(turnDistance(phases[n], phases[0]) - width / 2) <= 2 * phaseError) ambiguous++;
   let rotationSpread = 0;
   for (let n = 1; n < phases.length; n++) rotationSpread = Math.max(rotationSpread, turnDistance(phases[n] - phases[n - 1], alpha));
   return {
     ...r,
     visitBound: arcVisitBound(alpha, r.span),
-    phaseError: (16 / 15) * phaseError,
+    phaseError,
+    ambiguous,
     rotationSpread,
     periodic: periodicWithin(alpha, Math.max(1, r.span)),
   };

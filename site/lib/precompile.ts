@@ -122,7 +122,15 @@ export async function precompileChapter(cells: readonly HeadlessCell[]): Promise
     };
   }
   Object.assign(catalogue, {
-    canonicalEquations: (spec: HamiltonianSpec) => canonicalEquations(spec, build),
+    canonicalEquations: async (spec: HamiltonianSpec) => {
+      // Another method's stepper is applied by a module loaded on demand, which the closed loader cannot load:
+      // its code is compiled here, and the page builds the model from it.
+      if (spec.method && spec.method.name !== 'rk38') {
+        await compile(spec);
+        throw new NotAtBuildTime(`a model run by ${spec.method.name} is built in the page`);
+      }
+      return canonicalEquations(spec, build);
+    },
     // The simulator runs in the page; here it leaves the box it will fill (simulator/reserve.ts).
     simulator: async (options: ModelOptions & ReserveOptions & { model?: Model }) => {
       const model = options.model ?? (await canonicalEquations(modelSpec(options), build));

@@ -131,6 +131,8 @@ describe('Kac’s measurement', () => {
     const phases = rotation(GOLDEN - 1, 5000);
     const m = kacMeasurement(phases, phases, GOLDEN - 1, 0.02);
     expect(m.phaseError).toBe(0);
+    // a phase exactly on an end is ambiguous even with no error; none is, for this irrational start
+    expect(m.ambiguous).toBe(0);
     expect(m.rotationSpread).toBeLessThan(1e-12);
     expect(m.periodic).toBe(false);
     expect(Math.abs(m.mean - 50)).toBeLessThanOrEqual(m.visitBound / (0.02 * m.returns));
@@ -143,6 +145,12 @@ describe('Kac’s measurement', () => {
     const wobbly = Float64Array.from(rotation(GOLDEN - 1, 1000), (x, n) => (x + 1e-4 * Math.sin(n)) % 1);
     expect(kacMeasurement(wobbly, wobbly, GOLDEN - 1, 0.02).rotationSpread).toBeGreaterThan(5e-5);
     const shifted = Float64Array.from(rotation(GOLDEN - 1, 1000), (x) => (x + 3e-7) % 1);
-    expect(kacMeasurement(rotation(GOLDEN - 1, 1000), shifted, GOLDEN - 1, 0.02).phaseError).toBeCloseTo((16 / 15) * 3e-7, 12);
+    const shiftedRun = kacMeasurement(rotation(GOLDEN - 1, 1000), shifted, GOLDEN - 1, 0.02);
+    expect(shiftedRun.phaseError).toBeCloseTo((16 / 15) * 3e-7, 12);
+    // counted here: the crossings within twice that of the arc's ends
+    const ends = Array.from(rotation(GOLDEN - 1, 1000)).filter((x, n) => n > 0 && Math.abs(turnDistance(x, 0.2) - 0.01) <= 2 * (16 / 15) * 3e-7).length;
+    expect(shiftedRun.ambiguous).toBe(ends);
+    const wide = kacMeasurement(rotation(GOLDEN - 1, 1000), Float64Array.from(rotation(GOLDEN - 1, 1000), (x) => (x + 3e-3) % 1), GOLDEN - 1, 0.02);
+    expect(wide.ambiguous).toBeGreaterThan(0);
   });
 });
