@@ -22,6 +22,11 @@ export const LIOUVILLE_TRUTHS: Readonly<Record<string, Truth>> = {
     compute: ({ radius, gamma, t }) => (radius > 0 && t >= 0 ? Math.PI * radius * radius * Math.exp(-gamma * t) : NaN),
     method: 'Liouville’s formula d(ln A)/dt = ∇·v = −γ for ṗ = −∂H/∂q − γp, so A = πr²e^(−γt) (Arnold, Mathematical Methods, §16), exact',
   },
+  areaHalvingTime: {
+    args: ['gamma'],
+    compute: ({ gamma }) => (gamma > 0 ? Math.LN2 / gamma : NaN),
+    method: 'Liouville’s formula: A(t) = A(0)e^(−γt) for a damping γ, so the area halves at ln 2/γ, exact',
+  },
   kacMeanReturn: {
     args: ['width'],
     compute: ({ width }) => (width > 0 && width <= 1 ? 1 / width : NaN),

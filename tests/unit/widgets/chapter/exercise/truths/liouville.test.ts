@@ -46,3 +46,12 @@ test('goldenFirstReturn is the first n whose nφ comes within the distance of a 
     expect(value('goldenFirstReturn', { distance })).toBe(n);
   }
 });
+
+test('areaHalvingTime is where the damped flow map’s determinant, written out above, is 1/2: found here by bisection', () => {
+  for (const gamma of [0.1, 0.37]) {
+    const det = (t: number) => value('dampedArea', { radius: 1, gamma, t }) / Math.PI;
+    let [lo, hi] = [0, 100 / gamma];
+    for (let i = 0; i < 200; i++) [lo, hi] = det((lo + hi) / 2) > 0.5 ? [(lo + hi) / 2, hi] : [lo, (lo + hi) / 2];
+    expect(value('areaHalvingTime', { gamma })).toBeCloseTo(lo, 9);
+  }
+});
