@@ -24,6 +24,9 @@
  *    its four scores, TBT, LCP, CLS and the DOM's size.
  * h. the standard map's portrait at its default size while its K slider moves
  *    a step every frame (map-frames.mjs): frame rate, redraws, main-thread work.
+ * i. the pendulum's ensemble playing at its default size, 20 000 points and its
+ *    boundary moved in a worker (ensemble-frames.mjs): frame rate, frames with
+ *    a new ensemble, main-thread work.
  *
  * BENCH_ONLY=cold runs part e alone, BENCH_ONLY=first part f alone,
  * BENCH_ONLY=lighthouse part g alone (BENCH_LIGHTHOUSE_RUNS=N: the median of
@@ -47,6 +50,7 @@ import { coldLoad, median, CPU_SLOWDOWN } from './cold-load.mjs';
 import { firstVisits, printFirstVisits } from './first-visit.mjs';
 import { lighthouseTable } from './lighthouse.mjs';
 import { mapSweep } from './map-frames.mjs';
+import { ensembleWatch } from './ensemble-frames.mjs';
 
 const ROOT = fileURLToPath(new URL('../', import.meta.url));
 const SECONDS = Number(process.env.BENCH_SECONDS ?? 4);
@@ -366,6 +370,8 @@ async function interactive(browser, server, print) {
   await page.close();
   log('h. the standard map, its K slider moved every frame…');
   const h = await mapSweep(browser.context, server.origin, { ms: SECONDS * 1000, warmUpMs: WARM_UP_MS });
+  log('i. the pendulum’s ensemble, playing…');
+  const ens = await ensembleWatch(browser.context, server.origin, { ms: SECONDS * 1000, warmUpMs: WARM_UP_MS });
 
   log('d. JavaScript per page…');
   // Bytes do not depend on timing, so three pages at a time.
@@ -421,6 +427,11 @@ async function interactive(browser, server, print) {
   row(H, 'frame rate (rAF)', `**${f1(hFrames.fps)} fps** = ${rel(hFrames.fps)} of ceiling; p95 interval ${f1(hFrames.p95)} ms, ${hFrames.missed} missed`, '60 fps');
   row(H, 'portraits drawn / points each', `${int(h.redraws)} of ${int(hFrames.frames)} frames / ${int(h.points)}`);
   row(H, 'main thread busy, per frame', `${pct(h.busy)} = ${f2((h.busy * 1000) / hFrames.fps)} ms`, '< 16.7 ms');
+  const I = 'i. ensemble, 20 000 points and the boundary, playing';
+  const iFrames = frameStats(ens.stamps);
+  row(I, 'frame rate (rAF)', `${f1(iFrames.fps)} fps = ${rel(iFrames.fps)} of ceiling; p95 interval ${f1(iFrames.p95)} ms, ${iFrames.missed} missed`, '60 fps');
+  row(I, 'frames with a new ensemble / points drawn / boundary vertices at the end', `${int(ens.updates)} of ${int(iFrames.frames)} / ${int(ens.points)} / ${int(ens.vertices)} (t = ${f1(ens.t)}, ${ens.state})`);
+  row(I, 'main thread busy, per frame', `${pct(ens.busy)} = ${f2((ens.busy * 1000) / iFrames.fps)} ms`, '< 16.7 ms');
   for (const [label, s] of [['a', a], ['b', b], ...beams]) {
     if (s.error || !s.playing) log(`warning: scenario ${label} was not playing at the end${s.error ? `: ${s.error}` : ''}`);
   }

@@ -75,7 +75,7 @@ export function createLibrary(page: PageContext, cellSignal: () => AbortSignal |
   const analysis = () => import('./chapter/analysis/analysis.ts');
   const threeBody = () => import('../core/analysis/three-body.ts');
   const standardMapAnalysis = () => import('../core/analysis/standard-map.ts');
-  const recurrence = () => import('../core/analysis/recurrence.ts');
+  const liouville = () => import('./chapter/ensemble/liouville-library.ts');
   const typesetting = () => import('./chapter/math/tex.ts').then((m) => m.typesetting(page.typeset));
   // New models compile in a worker (chapter/models/compile-worker.ts), reporting progress; an edit that supersedes the cell cancels its build.
   const build = (): BuildOptions => ({
@@ -174,15 +174,15 @@ export function createLibrary(page: PageContext, cellSignal: () => AbortSignal |
     /** orbitReading(K, [q, p], iterations) → {rotation, lyapunov, pMin, pMax, crossed} of a standard-map orbit */
     orbitReading: () => standardMapAnalysis().then((m) => m.orbitReading),
     /** ensemble({model, center, radius, points, dt, speed, until, view, onFrame}) → a disc of initial conditions of a 1-DOF model carried by its flow in a worker: a cloud of points and the disc's boundary, refined where it stretches, with its area read out */
-    ensemble: () => import('./chapter/ensemble/ensemble.ts').then((m) => m.ensemble),
+    ensemble: () => liouville().then((m) => m.ensemble),
     /** flowArea(model, {center, radius, dt, span, maxSegment}) → {area, polygonError, initialArea, vertices, saturated, unresolved, failed}: the area of a disc's boundary carried span time units by the model */
-    flowArea: () => import('../core/ensemble/flow-area.ts').then((m) => m.flowArea),
+    flowArea: () => liouville().then((m) => m.flowArea),
     /** modelSection(model, start, {dt, count, index}) → {states, times, count}: the upward crossings of x_index = 0, by Hénon's trick */
-    modelSection: () => import('../core/analysis/model-section.ts').then((m) => m.modelSection),
+    modelSection: () => liouville().then((m) => m.modelSection),
     /** recordReturns(phases) → [{n, distance}]: the crossings at which a phase (in turns) came closer to its start than ever before */
-    recordReturns: () => recurrence().then((m) => m.recordReturns),
+    recordReturns: () => liouville().then((m) => m.recordReturns),
     /** kacMeasurement(phases, halfStepPhases, alpha, width) → {mean, returns, span, visitBound, phaseError, rotationSpread, periodic}: returns to an arc of width turns, with the Denjoy–Koksma bound */
-    kacMeasurement: () => recurrence().then((m) => m.kacMeasurement),
+    kacMeasurement: () => liouville().then((m) => m.kacMeasurement),
     /** exponentialGrowth(t, size, from, to) → {rate, bound, span, samples}: the rate a of a size growing as e^{at} times an oscillation, from a line through ln(size), with the bound the oscillation puts on it */
     exponentialGrowth: () => import('../core/analysis/exponential-growth.ts').then((m) => m.exponentialGrowth),
 

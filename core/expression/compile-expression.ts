@@ -1,8 +1,7 @@
 import type { MathNode } from 'mathjs';
 import { BuildTracker, throwIfAborted, type BuildControl } from '../model/build-control.ts';
 import { InputError } from '../errors.ts';
-import { requireHamiltonianFlow } from '../integrators/methods.ts';
-import { describeTerms } from '../model/non-hamiltonian.ts';
+import { describeTerms, requireHamiltonianFlow } from '../model/non-hamiltonian.ts';
 import type { NonHamiltonianPart, NonHamiltonianTerms } from '../types.ts';
 import { evaluatorSource, fusedStepperSource, type RateExpressions } from './fused-stepper.ts';
 import { jacobianEntries, jacobianSource } from './jacobian.ts';

@@ -12,8 +12,8 @@ import { InputError } from '../errors.ts';
 import { withSummary } from '../summary.ts';
 import type { Model, Stepper } from '../types.ts';
 import { dormandPrince } from './dormand-prince.ts';
-import { describeTerms } from '../model/non-hamiltonian.ts';
-import { METHOD_ACCURACY, requireHamiltonianFlow, SPLITTING_METHODS, type MethodChoice } from './methods.ts';
+import { describeTerms, requireHamiltonianFlow } from '../model/non-hamiltonian.ts';
+import { METHOD_ACCURACY, SPLITTING_METHODS, type MethodChoice } from './methods.ts';
 import { differenceJacobian, implicitMidpoint, type JacobianFunction } from './midpoint.ts';
 
 const DERIVATIVES: Record<Model['route'], string> = {

@@ -35,25 +35,6 @@ export const CODE_METHODS: ReadonlySet<MethodName> = new Set(['verlet', 'yoshida
 /** The splitting methods, which need H = T(p) + V(q, t). */
 export const SPLITTING_METHODS: ReadonlySet<MethodName> = new Set(['verlet', 'yoshida4']);
 
-/**
- * Why each method built on the flow being Hamiltonian cannot run a model
- * with a non-Hamiltonian term (model/non-hamiltonian.ts): the splittings
- * split H alone, and the midpoint rule is chosen for a symplecticity that
- * such a flow does not have. RK 3/8 and the adaptive method integrate any
- * field, the term included.
- */
-const NEEDS_HAMILTONIAN_FLOW: Partial<Record<MethodName, (terms: string) => string>> = {
-  verlet: (terms) => `splits H into T(p) + V(q, t), and a splitting of H is no splitting of this model's non-Hamiltonian term (${terms})`,
-  yoshida4: (terms) => `composes splittings of H into T(p) + V(q, t), and a splitting of H is no splitting of this model's non-Hamiltonian term (${terms})`,
-  midpoint: (terms) => `is there to keep the flow symplectic, and this model's non-Hamiltonian term (${terms}) makes it not`,
-};
-
-/** Throws the one-sentence InputError of a method that needs a Hamiltonian flow, for a model with the terms `terms` (described in words). */
-export function requireHamiltonianFlow(name: MethodName, terms: string | undefined): void {
-  const why = NEEDS_HAMILTONIAN_FLOW[name];
-  if (why !== undefined && terms !== undefined) throw new InputError(`the method ${name} ${why(terms)}; use rk38 or adaptive`);
-}
-
 export function isMethodName(name: unknown): name is MethodName {
   return typeof name === 'string' && (METHOD_NAMES as readonly string[]).includes(name);
 }

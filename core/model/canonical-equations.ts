@@ -2,9 +2,8 @@ import type { BuildControl } from './build-control.ts';
 import { isCompiledModel, modelKey, type CompiledModel, type CompiledModelStore, type ModelKeySpec } from './compiled-model.ts';
 import { InputError } from '../errors.ts';
 import type { MethodParts } from '../integrators/apply.ts';
-import { DEFAULT_METHOD, requireHamiltonianFlow, type MethodChoice } from '../integrators/methods.ts';
+import { DEFAULT_METHOD, type MethodChoice } from '../integrators/methods.ts';
 import { stateNames } from '../expression/names.ts';
-import { checkedTerms, describeTerms, requireExpressionRoute } from './non-hamiltonian.ts';
 import { compiledParts } from './compiled-parts.ts';
 import { gradientField, type OpaqueHamiltonian } from '../js-function/stencil.ts';
 import { rk38 } from '../integrators/rk38.ts';
@@ -54,6 +53,16 @@ export interface BuildOptions extends BuildControl {
   compile?: (spec: ModelKeySpec, control?: BuildControl) => Promise<CompiledModel>;
 }
 
+type TermRules = typeof import('./non-hamiltonian.ts');
+
+/** The rules of non-Hamiltonian terms, loaded when a spec first has some: no page without one carries them. */
+let termRules: Promise<TermRules> | undefined;
+
+/** Hands over the rules where nothing can be loaded on demand (the build, whose module loader is closed when cells run). */
+export function provideTermRules(rules: TermRules): void {
+  termRules = Promise.resolve(rules);
+}
+
 /**
  * Hamilton's canonical equations q̇ = ∂H/∂p, ṗ = −∂H/∂q (the paper's eq. 4)
  * for a model, by the most exact route its definition allows (see
@@ -69,10 +78,9 @@ export async function canonicalEquations(spec: HamiltonianSpec, options: BuildOp
   }
   const { names } = stateNames(spec.dof, spec.coordinates, spec.momenta);
   // Refused here, before anything is compiled or looked up, so that the reader hears of the term, not of the compile.
-  const terms = checkedTerms(spec.nonHamiltonian, names);
-  if (terms) {
-    requireExpressionRoute(spec);
-    requireHamiltonianFlow((spec.method ?? DEFAULT_METHOD).name, describeTerms(terms));
+  if (spec.nonHamiltonian !== undefined) {
+    const { refusedOrTerms } = await (termRules ??= import('./non-hamiltonian.ts'));
+    refusedOrTerms(spec, names, (spec.method ?? DEFAULT_METHOD).name);
   }
   if (spec.vectorField) return fieldModel(spec, names, 'vector-field', spec.vectorField, String(spec.vectorField));
   if (spec.gradient) {

@@ -9,13 +9,12 @@
 import type { CompiledModel, CompiledRoute } from './compiled-model.ts';
 import { InputError } from '../errors.ts';
 import type { MethodParts } from '../integrators/apply.ts';
-import { DEFAULT_METHOD, requireHamiltonianFlow, type MethodChoice } from '../integrators/methods.ts';
+import { DEFAULT_METHOD, type MethodChoice } from '../integrators/methods.ts';
 import type { JacobianFunction } from '../integrators/midpoint.ts';
 import { functionFromSource } from '../js-function/function-source.ts';
 import { stencilField, type OpaqueHamiltonian } from '../js-function/stencil.ts';
 import { rk38 } from '../integrators/rk38.ts';
 import { withSummary } from '../summary.ts';
-import { describeTerms } from './non-hamiltonian.ts';
 import type { HamiltonianFunction, Model, Stepper, VectorField } from '../types.ts';
 
 const ACCURACY: Record<CompiledRoute, string> = {
@@ -70,8 +69,8 @@ export function compiledParts(
   }
   const code = compiled.code!;
   const { nonHamiltonian } = compiled;
-  // Said before the check of the code's method below, which would only say the code is for another method.
-  if (nonHamiltonian) requireHamiltonianFlow(method.name, describeTerms(nonHamiltonian.terms));
+  // A method that cannot run the terms was refused by canonicalEquations (model/non-hamiltonian.ts), and their
+  // code is RK 3/8's, which the check below keeps from any other method's use.
   // code.stepper is RK 3/8's unless the code was generated for a splitting, whose stepper it then is.
   const split = compiled.method === 'verlet' || compiled.method === 'yoshida4';
   const needsOwnCode = method.name === 'verlet' || method.name === 'yoshida4' || method.name === 'midpoint';

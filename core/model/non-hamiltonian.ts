@@ -12,6 +12,7 @@
 import type { CheckCondition } from '../analysis/check-input.ts';
 import { InputError } from '../errors.ts';
 import { isFunctionSource } from '../js-function/function-source.ts';
+import type { MethodName } from '../integrators/methods.ts';
 import type { NonHamiltonianPart, NonHamiltonianTerms } from '../types.ts';
 
 /**
@@ -72,4 +73,38 @@ export function hamiltonianFlowCondition(model: { readonly nonHamiltonian?: NonH
     holds: part === undefined,
     condition: part ? `the model has a non-Hamiltonian term (${describeTerms(part.terms)}), so ${consequence}` : 'the model has no non-Hamiltonian term',
   };
+}
+
+/**
+ * Why each method built on the flow being Hamiltonian cannot run a model
+ * with a non-Hamiltonian term : the splittings
+ * split H alone, and the midpoint rule is chosen for a symplecticity that
+ * such a flow does not have. RK 3/8 and the adaptive method integrate any
+ * field, the term included.
+ */
+const NEEDS_HAMILTONIAN_FLOW: Partial<Record<MethodName, (terms: string) => string>> = {
+  verlet: (terms) => `splits H into T(p) + V(q, t), and a splitting of H is no splitting of this model's non-Hamiltonian term (${terms})`,
+  yoshida4: (terms) => `composes splittings of H into T(p) + V(q, t), and a splitting of H is no splitting of this model's non-Hamiltonian term (${terms})`,
+  midpoint: (terms) => `is there to keep the flow symplectic, and this model's non-Hamiltonian term (${terms}) makes it not`,
+};
+
+/** Throws the one-sentence InputError of a method that needs a Hamiltonian flow, for a model with the terms `terms` (described in words). */
+export function requireHamiltonianFlow(name: MethodName, terms: string | undefined): void {
+  const why = NEEDS_HAMILTONIAN_FLOW[name];
+  if (why !== undefined && terms !== undefined) throw new InputError(`the method ${name} ${why(terms)}; use rk38 or adaptive`);
+}
+
+/**
+ * A spec's terms checked, in the state's order, with everything refused
+ * that cannot run them: an H that is no math expression, a method that
+ * needs a Hamiltonian flow. canonicalEquations loads this module only for a
+ * spec that has terms, so that no page without one carries its sentences.
+ */
+export function refusedOrTerms(spec: { hamiltonian?: unknown; vectorField?: unknown; gradient?: unknown; nonHamiltonian?: NonHamiltonianTerms }, names: readonly string[], method: MethodName): NonHamiltonianTerms | undefined {
+  const terms = checkedTerms(spec.nonHamiltonian, names);
+  if (terms) {
+    requireExpressionRoute(spec);
+    requireHamiltonianFlow(method, describeTerms(terms));
+  }
+  return terms;
 }

@@ -60,6 +60,8 @@ const GROUPS = [
   [/^core\/maps\/|^core\/analysis\/standard-map\.ts$|^widgets\/chapter\/standard-map\//, 'standard-map'],
   // Liouville's chapter: the ensemble, its boundary and area, and the recurrence of a section; only that chapter loads it.
   [/^core\/ensemble\/|^core\/analysis\/(recurrence|model-section)\.ts$|^widgets\/chapter\/ensemble\//, 'liouville'],
+  // A model's non-Hamiltonian terms, their rules and sentences: loaded only for a spec that has some.
+  [/^core\/model\/non-hamiltonian\.ts$/, 'non-hamiltonian'],
   // The counter-based generator the standard map's diffusion draws its starts from (and the datasets, in the
   // CLI and the workers): in the core chunk, which a chapter's first simulator loads, it added 0.5 KB to each.
   [/^core\/dataset\/philox\.ts$/, 'random'],

@@ -13,7 +13,7 @@ import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { assertAgrees, assertLoadsClean, assertNoCellErrors, assertNoNaNShown, assertSumOfTerms, editAndReadChecks, theoryCheckIn, useChapter } from './chapter-checks.mjs';
 import { typeIntoCell } from './fixture.mjs';
-import { answer } from './exercise-answers.mjs';
+import { answer, answerCode } from './exercise-answers.mjs';
 import { rk4 } from './sweep-physics.mjs';
 
 const CHECKS = ['areaCheck', 'splittingCheck', 'dampedCheck', 'kacCheck'];
@@ -208,5 +208,8 @@ test('the exercises, answered in the page: right answers from closed forms compu
   assert.equal((await answer(page, 'first-close-return', String(n))).result, 'passed');
   v = await answer(page, 'first-close-return', '377');
   assert.equal(v.result, 'failed');
+  // frequencies 1 and 3/2: ω² = 9/4 on the second oscillator's spring
+  assert.equal((await answerCode(page, 'exact-recurrence', 'myPair', 'myPair = "(p0^2 + q0^2)/2 + (p1^2 + 2.25*q1^2)/2"')).result, 'passed');
+  assert.equal((await answerCode(page, 'exact-recurrence', 'myPair', 'myPair = "(p0^2 + q0^2)/2 + (p1^2 + 1.5*q1^2)/2"')).result, 'failed');
   assert.deepEqual(problems, []);
 });

@@ -107,6 +107,10 @@ class EnsembleFigure {
   readonly #summary = h('p', 'pb-poincare-summary');
   readonly #download = button('Download boundary (CSV)', 'The boundary now: its vertices’ s on the initial circle, q and p');
   readonly #layer = document.createElement('canvas');
+  /** the cloud's image, kept from frame to frame and cleared, not allocated anew: a megabyte a frame otherwise */
+  #image: { pixels: Uint32Array; data: ImageData } | null = null;
+  /** when the reading's words were last written: a few times a second while playing, since each write lays the text out again */
+  #worded = 0;
   #center: [number, number];
   #dt: number;
   #speed: number;
@@ -274,11 +278,15 @@ class EnsembleFigure {
     const width = Math.max(1, Math.round(rect.width * dpr));
     const tall = Math.max(1, Math.round(rect.height * dpr));
     const to = pixelMapping(width, tall, (q) => mx.scale(q) * dpr - left, (p) => my.scale(p) * dpr - top);
-    const pixels = new Uint32Array(width * tall);
-    const marked = markPoints(pixels, to, frame.cloud, pixelWord(theme.series[0]));
+    let image = this.#image;
+    if (image?.data.width !== width || image.data.height !== tall) {
+      const pixels = new Uint32Array(width * tall);
+      image = this.#image = { pixels, data: new ImageData(new Uint8ClampedArray(pixels.buffer), width, tall) };
+    } else image.pixels.fill(0);
+    const marked = markPoints(image.pixels, to, frame.cloud, pixelWord(theme.series[0]));
     const layer = this.#layer;
     if (layer.width !== width || layer.height !== tall) [layer.width, layer.height] = [width, tall];
-    layer.getContext('2d')?.putImageData(new ImageData(new Uint8ClampedArray(pixels.buffer), width, tall), 0, 0);
+    layer.getContext('2d')?.putImageData(image.data, 0, 0);
     g.drawImage(layer, left / dpr, top / dpr, width / dpr, tall / dpr);
     g.save();
     g.beginPath();
@@ -315,8 +323,12 @@ class EnsembleFigure {
     this.#transport.setPlaying(this.#state === 'playing', this.#state === 'failed' || this.#state === 'saturated');
     this.root.dataset.state = this.#state;
     if (!frame) return;
-    this.#reading.textContent = areaReading(frame) + (this.#state === 'done' ? ` · stopped at t = ${this.#setting.until}; Restart to watch again` : '');
-    this.#summary.textContent = ensembleSummary(frame, this.#setting.points);
+    const now = performance.now();
+    if (this.#state !== 'playing' || now - this.#worded > 250) {
+      this.#worded = now;
+      this.#reading.textContent = areaReading(frame) + (this.#state === 'done' ? ` · stopped at t = ${this.#setting.until}; Restart to watch again` : '');
+      if (this.#state !== 'playing') this.#summary.textContent = ensembleSummary(frame, this.#setting.points);
+    }
     Object.assign(this.root.dataset, {
       t: String(frame.t),
       area: String(frame.area),

@@ -1,0 +1,9 @@
+/**
+ * What the Liouville chapter's cells name, from one module: the catalogue
+ * then loads them through one import, which its boot chunk, on every page,
+ * carries once rather than once a name.
+ */
+export { ensemble } from './ensemble.ts';
+export { flowArea } from '../../../core/ensemble/flow-area.ts';
+export { modelSection } from '../../../core/analysis/model-section.ts';
+export { kacMeasurement, recordReturns } from '../../../core/analysis/recurrence.ts';
