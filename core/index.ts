@@ -57,6 +57,8 @@ export { localSlopes, METHOD_ORDERS, orderCheck, orderStudy, type OrderStudyInpu
 export { completeEllipticE, completeEllipticK, pendulumAction, pendulumFrequency, pendulumPeriod } from './analysis/pendulum.ts';
 export { loopAction } from './analysis/action.ts';
 export { flowJacobian, symplecticCheck, symplecticDefect } from './analysis/flow-map.ts';
+export { type ModelSection, modelSection } from './analysis/model-section.ts';
+export { arcReturns, arcVisitBound, kacMeasurement, periodicWithin, recordReturns } from './analysis/recurrence.ts';
 export { rk4Amplification, rk4StabilityLimit } from './analysis/rk-stability.ts';
 export { turningPoint, wellPeriod } from './analysis/well-period.ts';
 export { collinearQuintics, effectivePotential, jacobiConstant, type LagrangePoint, lagrangePoints, ROUTH_MU, triangularModes, type TriangularModes, zeroVelocityCurve } from './analysis/three-body.ts';
@@ -128,3 +130,6 @@ export { type HamiltonianFunction, type Model, type Route, type Stepper, type Ve
 export { VERSION } from './version.ts';
 export { checkWindowName, hamming, type WindowName } from './spectrum/window.ts';
 export * from './ensemble/index.ts';
+// The build hands canonicalEquations the terms' rules, which it would otherwise load on demand.
+export { provideTermRules } from './model/canonical-equations.ts';
+export * as nonHamiltonianRules from './model/non-hamiltonian.ts';

@@ -22,9 +22,7 @@
  */
 import * as acorn from 'acorn';
 import katex from 'katex';
-import * as termRules from '../../core/model/non-hamiltonian.ts';
-import { provideTermRules } from '../../core/model/canonical-equations.ts';
-import { compiledModelFor, canonicalEquations, type HamiltonianSpec, compileModel, methodChoice, pendulumAction, pendulumFrequency, pendulumPeriod, type CompiledModel, provideMathjs, provideAcorn, type Model } from '../../core/index.ts';
+import { nonHamiltonianRules, provideTermRules, compiledModelFor, canonicalEquations, type HamiltonianSpec, compileModel, methodChoice, pendulumAction, pendulumFrequency, pendulumPeriod, type CompiledModel, provideMathjs, provideAcorn, type Model } from '../../core/index.ts';
 // The one module named past the core's front door: mathjs itself, handed over statically (see core/index.ts).
 import { math } from '../../core/expression/mathjs-instance.ts';
 import { memoryStore, PAGE_DATA_FORMAT, type PageData, equationsHtml, equationsLatex, katexOptions, texHtml, typesetKey, createLibrary, modelSpec, type ModelOptions, reserveHtml, simulatorPlan, type ReserveOptions } from '../../widgets/index.ts';
@@ -78,7 +76,7 @@ function outcomeOf(error: Error): BuildOutcome {
 // the cells run: everything the compiler would import on demand is imported here.
 provideMathjs(math);
 provideAcorn(acorn);
-provideTermRules(termRules);
+provideTermRules(nonHamiltonianRules);
 
 class NotAtBuildTime extends Error {
   override name = 'NotAtBuildTime';

@@ -4,6 +4,4 @@
  * carries once rather than once a name.
  */
 export { ensemble } from './ensemble.ts';
-export { flowArea } from '../../../core/ensemble/flow-area.ts';
-export { modelSection } from '../../../core/analysis/model-section.ts';
-export { kacMeasurement, recordReturns } from '../../../core/analysis/recurrence.ts';
+export { flowArea, kacMeasurement, modelSection, recordReturns } from '../../../core/index.ts';
