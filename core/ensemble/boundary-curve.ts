@@ -20,7 +20,7 @@ export interface BoundaryCurve {
 }
 
 /** Semi-axes [r_q, r_p] of an ellipse, from one radius or two. */
-function semiAxes(radius: number | readonly [number, number]): [number, number] {
+export function semiAxes(radius: number | readonly [number, number]): [number, number] {
   const [rq, rp] = typeof radius === 'number' ? [radius, radius] : radius;
   if (!(rq > 0 && rp > 0 && Number.isFinite(rq) && Number.isFinite(rp))) {
     throw new InputError(`a disc's radius must be finite and > 0, not ${typeof radius === 'number' ? radius : `[${radius.join(', ')}]`}`);

@@ -9,8 +9,9 @@
  */
 import { InputError } from '../errors.ts';
 import type { Stepper } from '../types.ts';
-import { discBoundary } from './boundary-curve.ts';
-import { TrackedBoundary } from './tracked-boundary.ts';
+import { discArea } from './boundary-curve.ts';
+import { trackedDisc } from './flow-area.ts';
+import type { TrackedBoundary } from './tracked-boundary.ts';
 
 export interface EnsembleSetup {
   /** the disc's centre (q, p) */
@@ -91,18 +92,8 @@ export class Ensemble {
     if (!(Number.isInteger(points) && points >= 1 && points <= MOST_POINTS)) throw new InputError(`the ensemble’s points must be a whole number from 1 to ${MOST_POINTS}, not ${points}`);
     if (!(dt > 0 && Number.isFinite(dt))) throw new InputError(`the ensemble’s dt must be a positive number, not ${dt}`);
     this.cloud = discCloud(center, radius, points);
-    this.initialArea = Math.PI * radius[0] * radius[1];
-    this.boundary = new TrackedBoundary({
-      stepper,
-      params,
-      curve: discBoundary(center, radius),
-      dim: 2,
-      t0,
-      dt,
-      initialVertices: vertices,
-      maxSegment,
-      scale: radius,
-    });
+    this.initialArea = discArea(radius);
+    this.boundary = trackedDisc(stepper, params, { center, radius, dt, t0, vertices, maxSegment });
   }
 
   get t(): number {

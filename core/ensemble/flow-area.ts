@@ -4,8 +4,8 @@
  * the end in one call where the ensemble widget shows it frame by frame.
  */
 import { InputError } from '../errors.ts';
-import type { Model } from '../types.ts';
-import { discArea, discBoundary } from './boundary-curve.ts';
+import type { Model, Stepper } from '../types.ts';
+import { discArea, discBoundary, semiAxes } from './boundary-curve.ts';
 import { TrackedBoundary } from './tracked-boundary.ts';
 
 export interface FlowAreaOptions {
@@ -39,23 +39,32 @@ export interface FlowArea {
   failed: boolean;
 }
 
-/** Carries the disc's boundary `span` time units by `model`'s own stepper, in steps of dt, and measures the area it encloses. */
-export function flowArea(model: Model, options: FlowAreaOptions): FlowArea {
-  const { center, radius, dt, span, maxSegment = 0.05, vertices = 512, maxVertices = 100_000 } = options;
-  if (model.dim !== 2) throw new InputError(`flowArea measures an area in the phase plane of one degree of freedom, not ${model.dof}`);
-  if (!(span >= 0 && Number.isFinite(span))) throw new InputError(`flowArea: span must be a time ≥ 0, not ${span}`);
-  const scale: [number, number] = typeof radius === 'number' ? [radius, radius] : [radius[0], radius[1]];
-  const boundary = new TrackedBoundary({
-    stepper: model.stepper,
-    params: model.params,
+/** What a disc's tracked boundary is made from: its place, its step, and how finely it is followed. */
+export type DiscSetup = Pick<FlowAreaOptions, 'center' | 'radius' | 'dt' | 'maxSegment' | 'vertices' | 'maxVertices'> & { t0?: number };
+
+/** The boundary of the disc in the phase plane, to be carried by `stepper`, its sides measured in units of the radius along each axis. */
+export function trackedDisc(stepper: Stepper, params: Float64Array, setup: DiscSetup): TrackedBoundary {
+  const { center, radius, dt, t0 = 0, maxSegment = 0.05, vertices = 512, maxVertices } = setup;
+  return new TrackedBoundary({
+    stepper,
+    params,
     curve: discBoundary(center, radius),
     dim: 2,
+    t0,
     dt,
     initialVertices: vertices,
     maxSegment,
     maxVertices,
-    scale,
+    scale: semiAxes(radius),
   });
+}
+
+/** Carries the disc's boundary `span` time units by `model`'s own stepper, in steps of dt, and measures the area it encloses. */
+export function flowArea(model: Model, options: FlowAreaOptions): FlowArea {
+  const { radius, dt, span, maxVertices = 100_000 } = options;
+  if (model.dim !== 2) throw new InputError(`flowArea measures an area in the phase plane of one degree of freedom, not ${model.dof}`);
+  if (!(span >= 0 && Number.isFinite(span))) throw new InputError(`flowArea: span must be a time ≥ 0, not ${span}`);
+  const boundary = trackedDisc(model.stepper, model.params, { ...options, maxVertices });
   const steps = Math.round(span / dt);
   // In stretches, so the polygon is refined as it stretches rather than once at the end, when neighbours would have parted far.
   const stretch = Math.max(1, Math.round(0.1 / dt));

@@ -52,3 +52,32 @@ export function markPoints(pixels: Uint32Array, to: PixelMapping, pairs: ArrayLi
   }
   return marked;
 }
+
+/** Where a panel's plotting area falls on the canvas in device pixels, and the plane's mapping onto an image of that size. */
+export interface PixelArea {
+  readonly left: number;
+  readonly top: number;
+  readonly to: PixelMapping;
+}
+
+/** The plotting area `rect` (CSS px) of a drawing at pixel ratio `dpr`, with the plane mapped by `mx` and `my`. */
+export function pixelArea(rect: { left: number; top: number; width: number; height: number }, dpr: number, mx: { scale: (x: number) => number }, my: { scale: (y: number) => number }): PixelArea {
+  const left = Math.round(rect.left * dpr);
+  const top = Math.round(rect.top * dpr);
+  const width = Math.max(1, Math.round(rect.width * dpr));
+  const height = Math.max(1, Math.round(rect.height * dpr));
+  return { left, top, to: pixelMapping(width, height, (q) => mx.scale(q) * dpr - left, (p) => my.scale(p) * dpr - top) };
+}
+
+/**
+ * Lays `image` over the plotting area through `layer`, a canvas kept for it:
+ * the points are an image of their own, put over the background, with no
+ * read back from the drawing's canvas.
+ */
+export function drawPixels(g: CanvasRenderingContext2D, layer: HTMLCanvasElement, area: PixelArea, image: ImageData, dpr: number): void {
+  // Resized only when the image's size changes: setting a canvas's size, even to the same, reallocates it.
+  if (layer.width !== image.width || layer.height !== image.height) [layer.width, layer.height] = [image.width, image.height];
+  layer.getContext('2d')?.putImageData(image, 0, 0);
+  // g draws in CSS pixels: the image's device pixels fall one to one on the canvas's.
+  g.drawImage(layer, area.left / dpr, area.top / dpr, image.width / dpr, image.height / dpr);
+}

@@ -19,7 +19,7 @@ import { csvParts } from '../../exports/export.ts';
 import { downloadText } from '../../exports/download.ts';
 import { MARGIN } from '../../plots/axes.ts';
 import { PointPanel } from '../../plots/point-panel.ts';
-import { type PixelMapping, pixelMapping, pixelWord } from '../../plots/pixel-image.ts';
+import { drawPixels, pixelArea, type PixelMapping, pixelWord } from '../../plots/pixel-image.ts';
 import { markOrbits, P_DOMAIN, Q_DOMAIN, startGrid, torusP } from './standard-map-orbits.ts';
 import { cursorReading, LAUNCH_ITERATIONS, type LaunchedReading, launchReading, mapSummary } from './standard-map-text.ts';
 
@@ -117,15 +117,12 @@ class MapFigure {
     const f = this.#panel.frame((width) => Math.min(height, width - MARGIN.left - MARGIN.right + MARGIN.top + MARGIN.bottom), Q_DOMAIN, P_DOMAIN);
     if (!f) return;
     const { g, dpr, rect, mx, my, theme } = f;
-    const left = Math.round(rect.left * dpr);
-    const top = Math.round(rect.top * dpr);
-    const width = Math.max(1, Math.round(rect.width * dpr));
-    const tall = Math.max(1, Math.round(rect.height * dpr));
-    const to = pixelMapping(width, tall, (q) => mx.scale(q) * dpr - left, (p) => my.scale(p) * dpr - top);
+    const area = pixelArea(rect, dpr, mx, my);
+    const { to } = area;
     const key = `${this.#K} ${JSON.stringify(to)} ${theme.series.join()}`;
     let portrait = this.#portrait;
     if (portrait?.key !== key) {
-      portrait = { key, to, pixels: new Uint32Array(width * tall), states: this.#starts.slice(), done: 0, marked: 0 };
+      portrait = { key, to, pixels: new Uint32Array(to.width * to.height), states: this.#starts.slice(), done: 0, marked: 0 };
       this.#portrait = portrait;
       delete this.root.dataset.ready;
     }
@@ -134,13 +131,7 @@ class MapFigure {
       portrait.marked += markOrbits(portrait.pixels, to, standardMapOf(this.#K), portrait.states, part, Uint32Array.from(theme.series, pixelWord));
       portrait.done += part;
     }
-    // The iterates are an image of their own, laid over the background: no read back from the canvas.
-    const layer = this.#layer;
-    // Resized only when the portrait's size changes: setting a canvas's size, even to the same, reallocates it.
-    if (layer.width !== width || layer.height !== tall) [layer.width, layer.height] = [width, tall];
-    layer.getContext('2d')?.putImageData(new ImageData(new Uint8ClampedArray(portrait.pixels.buffer as ArrayBuffer), width, tall), 0, 0);
-    // g draws in CSS pixels: the image's device pixels fall one to one on the canvas's.
-    g.drawImage(layer, left / dpr, top / dpr, width / dpr, tall / dpr);
+    drawPixels(g, this.#layer, area, new ImageData(new Uint8ClampedArray(portrait.pixels.buffer as ArrayBuffer), to.width, to.height), dpr);
     const launched = this.#launched;
     if (launched && launched.K === this.#K) {
       // Larger marks in the accent colour: the reader's orbit stands out from the lattice's.
